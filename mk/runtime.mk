@@ -1,0 +1,38 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+#
+# The port runtime: C++ core, CLI (build/bin/robogene), unit tests, benchmarks, Python package.
+
+CMAKE_BUILD_TYPE ?= RelWithDebInfo
+RUNTIME_SOURCES := $(shell find runtime -type f -not -path '*/__pycache__/*' 2>/dev/null) CMakeLists.txt pyproject.toml
+
+$(BUILD)/build.ninja: CMakeLists.txt runtime/CMakeLists.txt $(STAMPS)/apt-runtime
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE)
+
+.PHONY: runtime python test-cpp test-python bench
+runtime: $(BUILD)/build.ninja
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The extension is built by scikit-build-core from the same CMake project (build dir kept under
+# build/python so rebuilds are incremental) and installed into .venv.
+$(STAMPS)/python: $(RUNTIME_SOURCES) $(VENV)/.stamp | $(STAMPS)
+	$(PY) -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps .
+	touch $@
+python: $(STAMPS)/python
+
+test-cpp: runtime
+	cd $(BUILD) && ctest --output-on-failure --no-tests=error -j $(JOBS) --timeout 300
+
+test-python: python runtime
+	$(PY) -m pytest -q -p no:cacheprovider tests/python
+
+bench: runtime python
+	$(PY) runtime/bench/run_benchmarks.py --build $(BUILD)
+
+ALL_TARGETS  += runtime python
+TEST_TARGETS += test-cpp test-python
+HELP_LINES   += "make runtime    build the C++ runtime, CLI and unit tests into build/" \
+                "make python     build and install the Python package into .venv" \
+                "make test-cpp   run the C++ unit tests (ctest)" \
+                "make test-python run the Python tests" \
+                "make bench      run the benchmarks and print ratios against raw sockets"
