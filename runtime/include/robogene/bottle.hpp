@@ -22,6 +22,16 @@ struct DecodeLimits {
   std::size_t max_bytes = 512u * 1024u * 1024u;  // whole encoded bottle
 };
 
+// Receives a binary encoding piece by piece. Blob bodies arrive through `reference()`, which a
+// transport may keep as a pointer (scatter-gather send) instead of copying; the Bottle must then
+// outlive the sink's use of the bytes. The default copies.
+class ByteSink {
+ public:
+  virtual ~ByteSink() = default;
+  virtual void append(const void* data, std::size_t size) = 0;
+  virtual void reference(const void* data, std::size_t size) { append(data, size); }
+};
+
 class Bottle {
  public:
   Bottle() = default;
@@ -42,6 +52,7 @@ class Bottle {
                                   const DecodeLimits& limits = {});
   std::vector<std::uint8_t> to_bytes() const;
   void append_bytes(std::vector<std::uint8_t>& out) const;  // appends the encoding to `out`
+  void encode_to(ByteSink& sink) const;                     // the one encoder; the others call it
   std::size_t encoded_size() const;
 
   std::size_t size() const noexcept { return items_.size(); }
