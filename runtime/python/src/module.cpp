@@ -1,0 +1,36 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The `robogene._core` extension: the C++ core exposed to Python. One file per area binds its
+// classes; this file only wires them together and maps C++ errors to Python exceptions.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "robogene/error.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Robogene core: bottles, ports and devices (YARP 3 wire compatible)";
+  m.attr("__version__") = ROBOGENE_VERSION;
+
+  static py::exception<robogene::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<robogene::ParseError> parse_error(m, "ParseError", error.ptr());
+  static py::exception<robogene::NetworkError> network_error(m, "NetworkError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const robogene::ParseError& e) {
+      // The instance carries `position` (byte offset or 1-based column) beside the message.
+      py::object instance = py::reinterpret_borrow<py::object>(parse_error.ptr())(e.what());
+      instance.attr("position") = e.position();
+      PyErr_SetObject(parse_error.ptr(), instance.ptr());
+    } catch (const robogene::NetworkError& e) {
+      PyErr_SetString(network_error.ptr(), e.what());
+    } catch (const robogene::Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    }
+  });
+
+  robogene::python::bind_bottle(m);
+}
