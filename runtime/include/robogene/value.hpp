@@ -82,6 +82,7 @@ class Value {
   std::int32_t as_int32() const;
   std::int64_t as_int64() const;
   double as_float64() const;
+  float as_float32() const;  // a float32 keeps its exact bits (NaN payload included); others narrow
   vocab_t as_vocab() const;
   const std::string& as_string() const;
   const std::vector<std::uint8_t>& as_blob() const;
@@ -103,8 +104,9 @@ class Value {
 
   Type type_ = Type::Null;
   union {
-    std::int64_t i_;
-    double f_;
+    std::int64_t i_;                 // Int8 .. Int64 and Vocab
+    double f_;                       // Float64
+    float f32_;                      // Float32, kept as float so its bit pattern survives
     std::string* s_;                 // String
     std::vector<std::uint8_t>* b_;   // Blob
     Bottle* l_;                      // List
