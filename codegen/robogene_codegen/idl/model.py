@@ -1,0 +1,150 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The checked, resolved form of the IDL that every emitter reads."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Optional, Union
+
+from .errors import Mark
+
+# Built-in scalar types. `joint` is an int32 axis index; `image_rgb` only travels on streams.
+BUILTIN_TYPES = ("joint", "int32", "float64", "bool", "string", "vocab", "image_rgb")
+
+# Units an argument or result may carry (SI or YARP's customary ones); anything else is a typo.
+UNITS = ("count", "deg", "deg/s", "deg/s^2", "rad", "rad/s", "rad/s^2", "m", "m/s", "m/s^2",
+         "Nm", "N", "A", "V", "W", "s", "ms", "Hz", "px", "fraction", "percent")
+
+
+@dataclass
+class EnumMember:
+    name: str
+    value: Union[int, str]  # an int32, or the characters of a vocab
+    doc: str
+    mark: Mark
+
+
+@dataclass
+class EnumType:
+    name: str
+    doc: str
+    wire: str  # "vocab" or "int32"
+    members: list[EnumMember]
+    mark: Mark
+
+    def member(self, name: str) -> Optional[EnumMember]:
+        return next((m for m in self.members if m.name == name), None)
+
+
+@dataclass
+class StructType:
+    name: str
+    doc: str
+    fields: list["Field"]
+    mark: Mark
+
+
+@dataclass
+class TypeRef:
+    name: str
+    enum: Optional[EnumType] = None
+    struct: Optional[StructType] = None
+
+    @property
+    def kind(self) -> str:
+        return "enum" if self.enum else "struct" if self.struct else "builtin"
+
+
+@dataclass
+class Field:
+    name: str
+    type: TypeRef
+    unit: Optional[str]
+    doc: str
+    mark: Mark
+    per_axis: bool = False      # a list with one entry per axis (all-axes forms)
+    has_default: bool = False
+    default: Any = None
+
+
+@dataclass
+class Method:
+    """One callable form: a single-axis or plain method, or the all-axes form derived from one."""
+
+    interface: str
+    name: str          # unique within the interface; the Python name
+    cpp_name: str      # the C++ name (all-axes forms may overload the single-axis name)
+    doc: str
+    wire: Optional[tuple]  # vocab path; None for local-only methods
+    echo: Optional[int]    # request index whose value the [is] reply repeats
+    args: list[Field]
+    results: list[Field]
+    mark: Mark
+    form: str = "single"   # "single", "axis" (has an all-axes twin) or "all"
+    twin: Optional[str] = None  # name of the other form
+
+    @property
+    def reply(self) -> str:
+        return "value" if self.results else "status"
+
+
+@dataclass
+class Interface:
+    name: str
+    version: int
+    doc: str
+    methods: list[Method]
+    file: str
+    mark: Mark
+    enums: list[EnumType] = field(default_factory=list)
+    structs: list[StructType] = field(default_factory=list)
+    fingerprint: str = ""
+    canonical: str = ""
+
+    def method(self, name: str) -> Optional[Method]:
+        return next((m for m in self.methods if m.name == name), None)
+
+
+@dataclass
+class Protocol:
+    wire: tuple
+    reply: str
+    version: tuple
+
+
+@dataclass
+class Stream:
+    name: str
+    port: str
+    doc: str
+    interface: str
+    method: Method
+    period: float
+
+
+@dataclass
+class Service:
+    name: str
+    version: int
+    doc: str
+    rpc_port: str
+    interfaces: list[Interface]
+    protocol: Optional[Protocol]
+    introspection: Optional[tuple]
+    streams: list[Stream]
+    file: str
+    mark: Mark
+    fingerprint: str = ""
+    canonical: str = ""
+
+
+@dataclass
+class Idl:
+    interfaces: list[Interface]
+    services: list[Service]
+    enums: list[EnumType]
+    structs: list[StructType]
+    files: list[str]
+
+    def interface(self, name: str) -> Optional[Interface]:
+        return next((i for i in self.interfaces if i.name == name), None)
