@@ -1,0 +1,176 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The motor-control board as data: every part, its library symbol and footprint, its order codes,
+and which net each pin joins. The schematic and the board are both generated from this table.
+
+Board: one CAN node driving two brushed DC motors (one iCub joint pair), built three times for the
+head. Nets named here become local labels; GND, +3V3, +5V and +12V are power symbols.
+"""
+from dataclasses import dataclass, field
+
+POWER_NETS = ("GND", "+3V3", "+5V", "+12V")
+NC = None  # pin deliberately left open: gets a no-connect flag
+
+
+@dataclass
+class Part:
+    ref: str
+    lib_id: str
+    value: str
+    footprint: str
+    mpn: str
+    manufacturer: str
+    pins: dict  # pin number -> net name, or NC
+    block: str
+    description: str = ""
+    in_bom: bool = True
+    extra: dict = field(default_factory=dict)
+
+
+def _r(ref, value, a, b, block, mpn, footprint="Resistor_SMD:R_0603_1608Metric", manufacturer="Yageo"):
+    return Part(ref, "Device:R", value, footprint, mpn, manufacturer, {"1": a, "2": b}, block)
+
+
+def _c(ref, value, a, b, block, mpn, footprint="Capacitor_SMD:C_0603_1608Metric", manufacturer="Murata"):
+    return Part(ref, "Device:C", value, footprint, mpn, manufacturer, {"1": a, "2": b}, block)
+
+
+JST_PH = "Connector_JST:JST_PH_B{n}B-PH-K_1x0{n}_P2.00mm_Vertical"
+JST_VH2 = "Connector_JST:JST_VH_B2P-VH_1x02_P3.96mm_Vertical"
+
+
+def _power_parts():
+    b = "power"
+    return [
+        Part("J1", "Connector_Generic:Conn_01x02", "12V_IN", JST_VH2, "B2P-VH(LF)(SN)", "JST",
+             {"1": "VIN_RAW", "2": "GND"}, b, "supply input, 12 V"),
+        Part("F1", "Device:Fuse", "5A", "Fuse:Fuse_Littelfuse-NANO2-451_453", "0451005.MRL", "Littelfuse",
+             {"1": "VIN_RAW", "2": "VIN_FUSED"}, b),
+        Part("D1", "Diode:SMAJ15A", "SMAJ15A", "Diode_SMD:D_SMA", "SMAJ15A", "Littelfuse",
+             {"1": "VIN_FUSED", "2": "GND"}, b, "input TVS"),
+        # Reverse-polarity protection: P-MOSFET in the positive rail, gate pulled to GND, Vgs clamped.
+        Part("Q1", "Transistor_FET:DMP3013SFV", "DMP3013SFV", "Package_SON:Diodes_PowerDI3333-8",
+             "DMP3013SFV-7", "Diodes Incorporated",
+             {"1": "+12V", "2": "+12V", "3": "+12V", "4": "Q1_GATE", "5": "VIN_FUSED"}, b),
+        _r("R1", "10k", "Q1_GATE", "GND", b, "RC0603FR-0710KL"),
+        Part("D2", "Device:D_Zener", "BZT52C10", "Diode_SMD:D_SOD-123", "BZT52C10-7-F", "Diodes Incorporated",
+             {"1": "+12V", "2": "Q1_GATE"}, b, "gate clamp"),
+        Part("C1", "Device:C_Polarized", "47u/25V", "Capacitor_SMD:CP_Elec_6.3x7.7", "EEE-FK1E470P", "Panasonic",
+             {"1": "+12V", "2": "GND"}, b),
+        _r("R2", "47k", "+12V", "VBUS_SENSE", b, "RC0603FR-0747KL"),
+        _r("R3", "10k", "VBUS_SENSE", "GND", b, "RC0603FR-0710KL"),
+        _c("C2", "100n", "VBUS_SENSE", "GND", b, "GCM188R71H104KA57D"),
+        # 12 V -> 5 V buck (encoders), then 5 V -> 3.3 V LDO (logic, CAN, current amplifiers).
+        Part("U2", "Regulator_Switching:AP63205WU", "AP63205WU", "Package_TO_SOT_SMD:TSOT-23-6",
+             "AP63205WU-7", "Diodes Incorporated",
+             {"1": "+5V", "2": "+12V", "3": "+12V", "4": "GND", "5": "SW_5V", "6": "BST_5V"}, b),
+        _c("C3", "10u/25V", "+12V", "GND", b, "GRM31CR61E106KA12L", "Capacitor_SMD:C_1206_3216Metric"),
+        _c("C4", "100n", "BST_5V", "SW_5V", b, "GCM188R71H104KA57D"),
+        Part("L1", "Device:L", "4.7u", "Inductor_SMD:L_Bourns-SRN4018", "SRN4018-4R7M", "Bourns",
+             {"1": "SW_5V", "2": "+5V"}, b),
+        _c("C5", "22u/10V", "+5V", "GND", b, "GRM31CR61A226KE19L", "Capacitor_SMD:C_1206_3216Metric"),
+        _c("C6", "22u/10V", "+5V", "GND", b, "GRM31CR61A226KE19L", "Capacitor_SMD:C_1206_3216Metric"),
+        Part("U3", "Regulator_Linear:AP2112K-3.3", "AP2112K-3.3", "Package_TO_SOT_SMD:SOT-23-5",
+             "AP2112K-3.3TRG1", "Diodes Incorporated",
+             {"1": "+5V", "2": "GND", "3": "+5V", "4": NC, "5": "+3V3"}, b),
+        _c("C7", "1u", "+5V", "GND", b, "GRM188R71C105KA12D"),
+        _c("C8", "1u", "+3V3", "GND", b, "GRM188R71C105KA12D"),
+    ]
+
+
+def _mcu_parts():
+    b = "mcu"
+    pins = {
+        "1": "+3V3", "17": "+3V3", "15": "+3V3", "16": "GND", "32": "GND", "14": "GND",
+        "4": "NRST", "2": "HSE_IN", "3": "HSE_OUT", "13": "VBUS_SENSE",
+        "26": "AEA_CLK", "27": "AEA_DO", "28": "M2_AEA_CS", "29": "M2_QA", "30": "M2_QB", "31": "BOOT0",
+        "5": "M1_QA", "6": "M1_QB", "7": "M2_IN1", "8": "M2_IN2", "9": "LED", "10": NC,
+        "11": "M1_ISENSE", "12": "M2_ISENSE", "18": "M1_IN1", "19": "M1_IN2", "20": "MOT_FAULT",
+        "21": "CAN_RX", "22": "CAN_TX", "23": "SWDIO", "24": "SWCLK", "25": "M1_AEA_CS",
+    }
+    return [
+        Part("U1", "MCU_ST_STM32G4:STM32G431KBTx", "STM32G431KBT6", "Package_QFP:LQFP-32_7x7mm_P0.8mm",
+             "STM32G431KBT6", "STMicroelectronics", pins, b, "Cortex-M4 with FDCAN"),
+        _c("C9", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        _c("C10", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        _c("C11", "1u", "+3V3", "GND", b, "GRM188R71C105KA12D"),
+        _c("C12", "4.7u", "+3V3", "GND", b, "GRM188R61A475KE15D"),
+        _r("R4", "10k", "BOOT0", "GND", b, "RC0603FR-0710KL"),
+        _c("C13", "100n", "NRST", "GND", b, "GCM188R71H104KA57D"),
+        Part("Y1", "Device:Crystal_GND24", "8MHz", "Crystal:Crystal_SMD_3225-4Pin_3.2x2.5mm",
+             "ABM8-8.000MHZ-B2-T", "Abracon", {"1": "HSE_IN", "2": "GND", "3": "HSE_OUT", "4": "GND"}, b),
+        _c("C14", "10p", "HSE_IN", "GND", b, "GRM1885C1H100JA01D"),
+        _c("C15", "10p", "HSE_OUT", "GND", b, "GRM1885C1H100JA01D"),
+        _r("R5", "1k", "LED", "LED_A", b, "RC0603FR-071KL"),
+        Part("D3", "Device:LED", "green", "LED_SMD:LED_0603_1608Metric", "150060GS75000", "Wurth Elektronik",
+             {"1": "GND", "2": "LED_A"}, b, "status LED"),
+        Part("J4", "Connector:Conn_ARM_JTAG_SWD_10", "SWD", "Connector_PinHeader_1.27mm:PinHeader_2x05_P1.27mm_Vertical",
+             "FTSH-105-01-F-DV-K", "Samtec",
+             {"1": "+3V3", "2": "SWDIO", "3": "GND", "4": "SWCLK", "5": "GND", "6": NC, "7": NC, "8": NC,
+              "9": "GND", "10": "NRST"}, b, "programming header (SWD)"),
+    ]
+
+
+def _can_parts():
+    b = "can"
+    jst3 = JST_PH.format(n=3)
+    return [
+        Part("U4", "Interface_CAN_LIN:SN65HVD230", "SN65HVD230", "Package_SO:SOIC-8_3.9x4.9mm_P1.27mm",
+             "SN65HVD230DR", "Texas Instruments",
+             {"1": "CAN_TX", "2": "GND", "3": "+3V3", "4": "CAN_RX", "5": NC, "6": "CANL", "7": "CANH", "8": "GND"}, b),
+        _c("C16", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        Part("D4", "Power_Protection:NUP2105L", "NUP2105L", "Package_TO_SOT_SMD:SOT-23",
+             "NUP2105LT1G", "onsemi", {"1": "CANH", "2": "CANL", "3": "GND"}, b, "CAN ESD"),
+        Part("J2", "Connector_Generic:Conn_01x03", "CAN", jst3, "B3B-PH-K-S(LF)(SN)", "JST",
+             {"1": "CANH", "2": "CANL", "3": "GND"}, b, "CAN bus in"),
+        Part("J3", "Connector_Generic:Conn_01x03", "CAN", jst3, "B3B-PH-K-S(LF)(SN)", "JST",
+             {"1": "CANH", "2": "CANL", "3": "GND"}, b, "CAN bus out (daisy chain)"),
+        # Termination only on the last node of the chain: fit the jumper there.
+        Part("JP1", "Jumper:Jumper_2_Open", "TERM", "Connector_PinHeader_2.54mm:PinHeader_1x02_P2.54mm_Vertical",
+             "61300211121", "Wurth Elektronik", {"1": "CANH", "2": "CAN_TERM"}, b, "120 ohm termination on/off"),
+        _r("R6", "120", "CAN_TERM", "CANL", b, "RC1206FR-07120RL", "Resistor_SMD:R_1206_3216Metric"),
+    ]
+
+
+def _axis_parts(n, first):
+    """One motor channel: H-bridge, inline shunt + amplifier, motor and encoder connectors."""
+    b = f"axis{n}"
+    m = f"M{n}_"
+    u_drv, u_amp = f"U{first}", f"U{first + 1}"
+    return [
+        Part(u_drv, "Driver_Motor:DRV8872DDA", "DRV8872DDA", "Package_SO:Texas_HTSOP-8-1EP_3.9x4.9mm_P1.27mm_EP2.95x4.9mm_Mask2.4x3.1mm_ThermalVias",
+             "DRV8872DDAR", "Texas Instruments",
+             {"1": "GND", "9": "GND", "2": m + "IN2", "3": m + "IN1", "4": "MOT_FAULT", "5": "+12V",
+              "6": m + "OUT1", "8": m + "OUT2", "7": "GND"}, b, f"H-bridge, motor {n}"),
+        _c(f"C{20 + 10 * n}", "10u/25V", "+12V", "GND", b, "GRM31CR61E106KA12L", "Capacitor_SMD:C_1206_3216Metric"),
+        _c(f"C{21 + 10 * n}", "100n", "+12V", "GND", b, "GCM188R71H104KA57D"),
+        _r(f"R{20 + 10 * n}", "20m", m + "OUT1", m + "MA", b, "WSL1206R0200FEA", "Resistor_SMD:R_1206_3216Metric", "Vishay"),
+        # Inline (motor-lead) sensing gives the signed motor current in every decay mode;
+        # REF1=3V3, REF2=GND puts zero current at mid-scale.
+        Part(u_amp, "Amplifier_Current:INA240A1PW", "INA240A1PW", "Package_SO:TSSOP-8_4.4x3mm_P0.65mm",
+             "INA240A1PWR", "Texas Instruments",
+             {"1": "GND", "4": "GND", "2": m + "OUT1", "3": m + "MA", "5": "+3V3", "6": "GND", "7": "+3V3",
+              "8": m + "ISENSE"}, b, f"current sense amplifier, motor {n}"),
+        _c(f"C{22 + 10 * n}", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        Part(f"J{10 + 10 * n}", "Connector_Generic:Conn_01x02", "MOTOR", JST_VH2, "B2P-VH(LF)(SN)", "JST",
+             {"1": m + "MA", "2": m + "OUT2"}, b, f"motor {n}"),
+        Part(f"J{11 + 10 * n}", "Connector_Generic:Conn_01x04", "QENC", JST_PH.format(n=4), "B4B-PH-K-S(LF)(SN)", "JST",
+             {"1": "+5V", "2": m + "QA", "3": m + "QB", "4": "GND"}, b, f"motor encoder {n} (quadrature)"),
+        Part(f"J{12 + 10 * n}", "Connector_Generic:Conn_01x05", "AEA", JST_PH.format(n=5), "B5B-PH-K-S(LF)(SN)", "JST",
+             {"1": "+5V", "2": "AEA_CLK", "3": m + "AEA_CS", "4": "AEA_DO", "5": "GND"}, b,
+             f"joint encoder {n} (absolute, SSI)"),
+    ]
+
+
+def _shared_motor_parts():
+    return [_r("R7", "10k", "+3V3", "MOT_FAULT", "mcu", "RC0603FR-0710KL")]
+
+
+def _mounting_holes():
+    return [Part(f"H{i}", "Mechanical:MountingHole", "M3", "MountingHole:MountingHole_3.2mm_M3", "", "", {},
+                 "mech", in_bom=False) for i in range(1, 5)]
+
+
+def parts():
+    return (_power_parts() + _mcu_parts() + _shared_motor_parts() + _can_parts()
+            + _axis_parts(1, 5) + _axis_parts(2, 7) + _mounting_holes())

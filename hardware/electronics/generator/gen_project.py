@@ -1,0 +1,83 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Write the project-local library tables and the .kicad_pro (design rules, net classes).
+
+The tables name only the libraries this design uses, through KiCad's own ${KICAD9_*_DIR} variables,
+so kicad-cli finds every symbol and footprint even with a fresh HOME (no global tables).
+"""
+import json
+import os
+import sys
+
+import design
+
+NET_CLASSES = [
+    # name, track width, clearance, via diameter, via drill, nets
+    ("Default", 0.25, 0.2, 0.6, 0.3, []),
+    ("Power", 0.8, 0.25, 0.8, 0.4, ["+12V", "VIN_RAW", "VIN_FUSED", "SW_5V", "M1_OUT1", "M1_OUT2", "M1_MA",
+                                    "M2_OUT1", "M2_OUT2", "M2_MA"]),
+    ("Supply", 0.4, 0.2, 0.6, 0.3, ["+5V", "+3V3"]),
+]
+
+
+def used_libs():
+    sym = sorted({p.lib_id.split(":")[0] for p in design.parts()} | {"power"})
+    fp = sorted({p.footprint.split(":")[0] for p in design.parts()})
+    return sym, fp
+
+
+def sym_table(libs):
+    rows = [f'  (lib (name "{n}")(type "KiCad")(uri "${{KICAD9_SYMBOL_DIR}}/{n}.kicad_sym")(options "")(descr ""))'
+            for n in libs]
+    return "(sym_lib_table\n  (version 7)\n" + "\n".join(rows) + "\n)\n"
+
+
+def fp_table(libs):
+    rows = [f'  (lib (name "{n}")(type "KiCad")(uri "${{KICAD9_FOOTPRINT_DIR}}/{n}.pretty")(options "")(descr ""))'
+            for n in libs]
+    return "(fp_lib_table\n  (version 7)\n" + "\n".join(rows) + "\n)\n"
+
+
+def project(name):
+    classes = []
+    for cname, track, clear, via_d, via_drill, _ in NET_CLASSES:
+        classes.append({"name": cname, "track_width": track, "clearance": clear, "via_diameter": via_d,
+                        "via_drill": via_drill, "microvia_diameter": 0.3, "microvia_drill": 0.1,
+                        "diff_pair_gap": 0.25, "diff_pair_via_gap": 0.25, "diff_pair_width": 0.2,
+                        "bus_width": 12, "wire_width": 6, "line_style": 0,
+                        "pcb_color": "rgba(0, 0, 0, 0.000)", "schematic_color": "rgba(0, 0, 0, 0.000)",
+                        "priority": 2147483647 if cname == "Default" else len(classes)})
+    patterns = [{"netclass": c[0], "pattern": n} for c in NET_CLASSES for n in c[5]]
+    return {
+        "board": {"design_settings": {
+            "defaults": {"board_outline_line_width": 0.1, "copper_line_width": 0.2, "silk_line_width": 0.12},
+            "rules": {"min_clearance": 0.2, "min_track_width": 0.2, "min_via_diameter": 0.5,
+                      "min_through_hole_diameter": 0.3, "min_via_annular_width": 0.1,
+                      "min_copper_edge_clearance": 0.3, "min_hole_to_hole": 0.25, "min_hole_clearance": 0.25,
+                      "min_silk_clearance": 0.0, "min_text_height": 0.8, "min_text_thickness": 0.08,
+                      "allow_blind_buried_vias": False, "allow_microvias": False, "max_error": 0.005,
+                      "min_connection": 0.0, "min_resolved_spokes": 2, "solder_mask_to_copper_clearance": 0.0,
+                      "use_height_for_length_calcs": True, "min_microvia_diameter": 0.2,
+                      "min_microvia_drill": 0.1, "min_groove_width": 0.0},
+            "track_widths": [0.0, 0.25, 0.4, 0.8], "via_dimensions": [{"diameter": 0.0, "drill": 0.0}]}},
+        "meta": {"filename": name + ".kicad_pro", "version": 3},
+        "net_settings": {"classes": classes, "meta": {"version": 4}, "net_colors": None,
+                         "netclass_assignments": None, "netclass_patterns": patterns},
+        "schematic": {"legacy_lib_dir": "", "legacy_lib_list": []},
+        "sheets": [],
+        "text_variables": {},
+    }
+
+
+def main(out_dir, name):
+    sym, fp = used_libs()
+    with open(os.path.join(out_dir, "sym-lib-table"), "w") as f:
+        f.write(sym_table(sym))
+    with open(os.path.join(out_dir, "fp-lib-table"), "w") as f:
+        f.write(fp_table(fp))
+    with open(os.path.join(out_dir, name + ".kicad_pro"), "w") as f:
+        f.write(json.dumps(project(name), indent=2, sort_keys=True) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
