@@ -23,6 +23,9 @@ struct NameServer::Session {
 NameServer::NameServer(NameService& service, const net::Endpoint& at, NameServerLimits limits)
     : service_(service), limits_(limits), listener_(net::TcpListener::listen(at)) {}
 
+NameServer::NameServer(NameService& service, net::TcpListener listener, NameServerLimits limits)
+    : service_(service), limits_(limits), listener_(std::move(listener)) {}
+
 NameServer::~NameServer() {
   stop();
   std::lock_guard<std::mutex> lock(sessions_mutex_);

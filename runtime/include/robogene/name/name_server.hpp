@@ -35,6 +35,8 @@ class NameServer {
  public:
   // Binds `at` (throws NetworkError naming the address when it cannot).
   NameServer(NameService& service, const net::Endpoint& at, NameServerLimits limits = {});
+  // Serves on a socket already bound (so that a server on port 0 can learn its number first).
+  NameServer(NameService& service, net::TcpListener listener, NameServerLimits limits = {});
   ~NameServer();
   NameServer(const NameServer&) = delete;
   NameServer& operator=(const NameServer&) = delete;

@@ -1,0 +1,95 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// `robogene`: one executable for the name server and the everyday port tools, in the manner of
+// YARP's `yarp` companion (same outputs where a user would compare them).
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "robogene/error.hpp"
+
+namespace {
+
+using robogene::cli::Args;
+
+struct Command {
+  const char* name;
+  const char* usage;
+  const char* summary;
+  int (*run)(Args&);
+};
+
+const Command kCommands[] = {
+    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S]",
+     "run the name server /root (default 127.0.0.1:10000); registrations persist in FILE", robogene::cli::cmd_server},
+    {"name", "robogene name query|list|register|unregister|set|get|check|route|gc ARGS... [--server HOST:PORT]",
+     "ask the name server, printing its replies as `yarp name` does", robogene::cli::cmd_name},
+};
+
+const Command* find_command(const std::string& name) {
+  for (const auto& c : kCommands) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+void print_help() {
+  std::printf("robogene %s: ports, name server and tools speaking YARP 3's protocol\n\n", ROBOGENE_VERSION);
+  std::printf("usage: robogene COMMAND [ARGS...] [--server HOST:PORT]\n\ncommands:\n");
+  for (const auto& c : kCommands) std::printf("  %-11s %s\n", c.name, c.summary);
+  std::printf("  %-11s %s\n", "version", "print the version");
+  std::printf("  %-11s %s\n", "help", "this list; `robogene help COMMAND` for one command");
+  std::printf("\nWithout --server, the name server is found through yarp.conf ($YARP_CONFIG_HOME,\n"
+              "$XDG_CONFIG_HOME/yarp or ~/.config/yarp), else 127.0.0.1:10000.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  robogene::cli::block_shutdown_signals();
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (words.empty()) {
+    print_help();
+    return 2;
+  }
+  const std::string name = words[0];
+  words.erase(words.begin());
+  if (name == "help" || name == "--help" || name == "-h") {
+    if (!words.empty()) {
+      const Command* c = find_command(words[0]);
+      if (!c) {
+        std::fprintf(stderr, "robogene help: unknown command \"%s\"\n", words[0].c_str());
+        return 2;
+      }
+      std::printf("usage: %s\n\n%s\n", c->usage, c->summary);
+      return 0;
+    }
+    print_help();
+    return 0;
+  }
+  if (name == "version" || name == "--version") {
+    std::printf("robogene %s (YARP 3 wire protocol)\n", ROBOGENE_VERSION);
+    return 0;
+  }
+  const Command* command = find_command(name);
+  if (!command) {
+    std::fprintf(stderr, "robogene: unknown command \"%s\"; `robogene help` lists them\n", name.c_str());
+    return 2;
+  }
+  Args args(words);
+  try {
+    return command->run(args);
+  } catch (const robogene::cli::UsageError& e) {
+    std::fprintf(stderr, "robogene %s: %s\nusage: %s\n", name.c_str(), e.what(), command->usage);
+    return 2;
+  } catch (const robogene::Error& e) {
+    std::fprintf(stderr, "robogene %s: %s\n", name.c_str(), e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "robogene %s: unexpected failure: %s\n", name.c_str(), e.what());
+    return 1;
+  }
+}
