@@ -185,8 +185,9 @@ Bottle Bottle::from_bytes(const std::uint8_t* data, std::size_t size, const Deco
   std::size_t used = 0;
   Bottle b = from_bytes_prefix(data, size, &used, limits);
   if (used != size) {
-    throw ParseError(used, "byte " + std::to_string(used) + ": " + std::to_string(size - used) +
-                               " unexpected bytes after the end of the bottle");
+    const std::size_t extra = size - used;
+    throw ParseError(used, "byte " + std::to_string(used) + ": " + std::to_string(extra) +
+                               (extra == 1 ? " unexpected byte" : " unexpected bytes") + " after the end of the bottle");
   }
   return b;
 }
