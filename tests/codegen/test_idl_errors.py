@@ -295,3 +295,9 @@ def test_errors_from_several_files_are_all_reported(tmp_path):
 def test_kind_must_be_exactly_one(tmp_path):
     err = one_error(tmp_path, {"a.yaml": "idl: 1\ndoc: Nothing.\n"})
     assert "a file describes exactly one of" in err and err.endswith("found none")
+
+
+def test_reserved_words_cannot_name_things(tmp_path):
+    err = one_error(tmp_path, {"t.yaml": TYPES.replace("name: idle", "name: auto")})
+    assert err == (f"{tmp_path}/t.yaml:8:18: error: 'auto' is a reserved word in C++ or Python "
+                   "and cannot name anything in the IDL")

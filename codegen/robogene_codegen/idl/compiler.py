@@ -13,7 +13,7 @@ from typing import Any, Optional
 from . import fingerprint
 from .errors import IdlError, IdlErrors, Mark
 from .loader import Document, load
-from .model import (BUILTIN_TYPES, UNITS, EnumMember, EnumType, Field, Idl, Interface, Method,
+from .model import (BUILTIN_TYPES, RESERVED_WORDS, UNITS, EnumMember, EnumType, Field, Idl, Interface, Method,
                     Protocol, Service, Stream, StructType, TypeRef)
 from .schema import validate
 
@@ -21,8 +21,11 @@ DEFAULT_SCHEMA = Path(__file__).resolve().parents[3] / "interfaces" / "idl" / "i
 INT32_MIN, INT32_MAX = -(2 ** 31), 2 ** 31 - 1
 
 
-def compile_directory(directory: Path, schema: Path = DEFAULT_SCHEMA) -> Idl:
-    return compile_files(sorted(Path(directory).glob("*.yaml")), schema, root=Path(directory))
+def compile_directory(directory: Path, schema: Path = DEFAULT_SCHEMA,
+                      root: Optional[Path] = None) -> Idl:
+    """Compiles every *.yaml of `directory`; file names in errors and outputs are shown relative
+    to `root` when given (so generated headers do not depend on where the tree lives)."""
+    return compile_files(sorted(Path(directory).glob("*.yaml")), schema, root=root)
 
 
 def compile_files(paths: list[Path], schema: Path = DEFAULT_SCHEMA,
@@ -30,7 +33,7 @@ def compile_files(paths: list[Path], schema: Path = DEFAULT_SCHEMA,
     errors: list[IdlError] = []
     docs: list[Document] = []
     for path in paths:
-        name = str(path)
+        name = str(Path(path).resolve().relative_to(root.resolve())) if root else str(path)
         try:
             text = Path(path).read_text(encoding="utf-8")
         except UnicodeDecodeError as exc:
@@ -69,6 +72,8 @@ class _Checker:
 
     def check(self, docs: list[Document]) -> Idl:
         for doc in docs:
+            self._reserved_names(doc, doc.data, ())
+        for doc in docs:
             if "types" in doc.data:
                 self._types(doc)
         for doc in docs:
@@ -106,6 +111,19 @@ class _Checker:
                    services=sorted(services.values(), key=lambda s: s.name),
                    enums=sorted(self.enums.values(), key=lambda e: e.name),
                    structs=sorted(self.structs.values(), key=lambda s: s.name), files=[])
+
+    def _reserved_names(self, doc: Document, data: Any, path: tuple) -> None:
+        """Names become C++ and Python identifiers; a keyword there would break the build."""
+        if isinstance(data, dict):
+            for key, value in data.items():
+                if key in ("name", "cpp_name", "interface", "service") and value in RESERVED_WORDS:
+                    self.error(doc.mark(path + (key,)), f"'{value}' is a reserved word in C++ or "
+                               "Python and cannot name anything in the IDL")
+                else:
+                    self._reserved_names(doc, value, path + (key,))
+        elif isinstance(data, list):
+            for i, value in enumerate(data):
+                self._reserved_names(doc, value, path + (i,))
 
     # ---- shared types ------------------------------------------------------------------------
 

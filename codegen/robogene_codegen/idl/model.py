@@ -11,6 +11,20 @@ from .errors import Mark
 # Built-in scalar types. `joint` is an int32 axis index; `image_rgb` only travels on streams.
 BUILTIN_TYPES = ("joint", "int32", "float64", "bool", "string", "vocab", "image_rgb")
 
+# Names that would not compile as C++ or Python identifiers in the generated code.
+RESERVED_WORDS = frozenset("""
+alignas alignof and and_eq asm auto bitand bitor bool break case catch char char8_t char16_t
+char32_t class compl concept const consteval constexpr constinit const_cast continue co_await
+co_return co_yield decltype default delete do double dynamic_cast else enum explicit export
+extern false float for friend goto if inline int long mutable namespace new noexcept not not_eq
+nullptr operator or or_eq private protected public register reinterpret_cast requires return
+short signed sizeof static static_assert static_cast struct switch template this thread_local
+throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t while
+xor xor_eq
+False None True as assert async await def del elif except finally from global import in is
+lambda nonlocal pass raise with yield self
+""".split())
+
 # Units an argument or result may carry (SI or YARP's customary ones); anything else is a typo.
 UNITS = ("count", "deg", "deg/s", "deg/s^2", "rad", "rad/s", "rad/s^2", "m", "m/s", "m/s^2",
          "Nm", "N", "A", "V", "W", "s", "ms", "Hz", "px", "fraction", "percent")

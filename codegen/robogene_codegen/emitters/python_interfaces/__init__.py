@@ -1,0 +1,60 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Python abstract classes with type hints, the shared enums and structs, and the wire tables."""
+from __future__ import annotations
+
+from ...idl.model import Field, Idl, Method, TypeRef
+from ..common import (all_sources, described, environment, identifier, line_comment_header,
+                      param_name, vocab_int, wire_vocabs)
+
+PACKAGE_DIR = "runtime/python/robogene/dev/generated"
+
+_SCALARS = {"joint": "int", "int32": "int", "float64": "float", "bool": "bool", "string": "str",
+            "vocab": "int", "image_rgb": "ImageRgb"}
+
+
+def py_type(t: TypeRef) -> str:
+    return t.name if t.kind != "builtin" else _SCALARS[t.name]
+
+
+def hint(f: Field, sequence: str = "Sequence") -> str:
+    return f"{sequence}[{py_type(f.type)}]" if f.per_axis else py_type(f.type)
+
+
+def py_default(f: Field) -> str:
+    if f.type.enum:
+        return f"{f.type.name}.{f.default.upper()}"
+    if f.type.name == "vocab":
+        return str(vocab_int(f.default))
+    if f.type.name == "float64":
+        return repr(float(f.default))
+    return repr(f.default)
+
+
+def params(m: Method) -> str:
+    out = ["self"]
+    for a in m.args:
+        p = f"{param_name(a)}: {hint(a)}"
+        if a.has_default:
+            p += f" = {py_default(a)}"
+        out.append(p)
+    return ", ".join(out)
+
+
+def returns(m: Method) -> str:
+    if not m.results:
+        return "bool"
+    types = [hint(r, "List") for r in m.results]
+    return f"Optional[{types[0]}]" if len(types) == 1 else f"Optional[Tuple[{', '.join(types)}]]"
+
+
+def emit(idl: Idl) -> dict[str, str]:
+    env = environment(__file__)
+    helpers = dict(py_type=py_type, params=params, returns=returns, described=described,
+                   vocab_int=vocab_int, identifier=identifier, param_name=param_name, hint=hint)
+    header = line_comment_header("#", "BSD-3-Clause", all_sources(idl))
+    out = {}
+    for name in ("__init__.py", "types.py", "interfaces.py", "wire.py"):
+        out[f"{PACKAGE_DIR}/{name}"] = env.get_template(f"{name}.j2").render(
+            header=header, idl=idl, vocabs=wire_vocabs(idl), **helpers)
+    return out
