@@ -1,0 +1,151 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "text_connections.hpp"
+
+#include "robogene/error.hpp"
+
+namespace robogene::carrier::detail {
+
+namespace {
+const char kAckLine[] = "<ACK>\r\n";
+}
+
+TextInbound::TextInbound(std::unique_ptr<Link> link, std::string carrier, bool acks,
+                         std::string remote, std::size_t max_message_size, std::size_t max_line)
+    : link_(std::move(link)),
+      carrier_(std::move(carrier)),
+      acks_(acks),
+      remote_(std::move(remote)),
+      max_message_size_(max_message_size),
+      max_line_(max_line) {
+  // People type slowly: no timeout on a text connection.
+  link_->stream.set_read_timeout(net::kNoTimeout);
+}
+
+bool TextInbound::read(InboundMessage& m) {
+  out_.clear();
+  if (!link_->reader.wait_for_data()) return false;
+  std::string line = link_->reader.read_line(max_line_);
+  m.command = line;
+  m.key = line.empty() ? 0 : line[0];
+  m.envelope.clear();
+  m.text_mode = true;
+  m.reply_expected = false;
+  m.payload.clear();
+  if (m.key == 'd' || m.key == 'D') {
+    // "d" waits for a reply, "do" / "D" mean data only.
+    m.reply_expected = m.key == 'd' && line != "do";
+    read_bottle_text(m);
+  } else if (m.key == 'a') {
+    m.reply_expected = true;
+    read_bottle_text(m);
+  }
+  return true;
+}
+
+void TextInbound::read_bottle_text(InboundMessage& m) {
+  std::string text;
+  for (;;) {
+    std::string line = link_->reader.read_line(max_line_);
+    bool continued = !line.empty() && line.back() == '\\';
+    if (continued) line.pop_back();
+    if (!text.empty()) text += '\n';
+    text += line;
+    if (text.size() > max_message_size_) {
+      throw ParseError(text.size(), "text message from " + remote_ + " (" + peer_text() +
+                                        ") exceeds the maximum message size of " +
+                                        std::to_string(max_message_size_) + " bytes");
+    }
+    if (!continued && Bottle::text_is_complete(text)) break;
+  }
+  m.payload.assign(text.begin(), text.end());
+}
+
+void TextInbound::reply(const Bottle& b) {
+  out_ += b.to_text();
+  out_ += "\r\n";
+}
+
+void TextInbound::reply_raw(const void* data, std::size_t size) {
+  out_.append(static_cast<const char*>(data), size);
+}
+
+void TextInbound::finish() {
+  if (acks_) out_ += kAckLine;
+  if (!out_.empty()) link_->stream.write_all(out_.data(), out_.size());
+  out_.clear();
+}
+
+std::unique_ptr<OutboundConnection> TextInbound::reverse() {
+  return std::make_unique<TextOutbound>(std::move(link_), carrier_, acks_, remote_, max_line_,
+                                        true);
+}
+
+TextOutbound::TextOutbound(std::unique_ptr<Link> link, std::string carrier, bool acks,
+                           std::string remote, std::size_t max_line, bool reversed)
+    : link_(std::move(link)),
+      carrier_(std::move(carrier)),
+      acks_(acks),
+      remote_(std::move(remote)),
+      max_line_(max_line),
+      reversed_(reversed) {}
+
+void TextOutbound::set_timeout(net::Millis t) {
+  link_->stream.set_read_timeout(t);
+  link_->stream.set_write_timeout(t);
+}
+
+void TextOutbound::send(const OutboundMessage& m, Bottle* reply) {
+  std::string text;
+  switch (m.key) {
+    case 'd': text = "d\r\n"; break;
+    case 'D': text = "do\r\n"; break;  // "data only", as the paper's transcript shows
+    case 'a': text = "a\r\n"; break;
+    case 'r': text = "r\r\n"; break;
+    case 'q': text = "q\r\n"; break;
+    default: text = std::string(1, m.key) + "\r\n"; break;
+  }
+  if (m.bottle) {
+    text += m.bottle->to_text();
+    text += "\r\n";
+  }
+  link_->stream.write_all(text.data(), text.size());
+  if (reversed_ || !acks_) {
+    if (reply) reply->clear();
+    return;
+  }
+  std::string reply_text;
+  for (;;) {
+    std::string line = link_->reader.read_line(max_line_);
+    if (line == "<ACK>") break;
+    if (!reply_text.empty()) reply_text += '\n';
+    reply_text += line;
+  }
+  if (reply) *reply = Bottle::from_text(reply_text);
+}
+
+std::vector<std::string> TextOutbound::exchange_lines(const std::string& text) {
+  link_->stream.write_all(text.data(), text.size());
+  std::vector<std::string> lines;
+  if (!acks_) return lines;
+  for (;;) {
+    std::string line = link_->reader.read_line(max_line_);
+    if (line == "<ACK>") return lines;
+    lines.push_back(std::move(line));
+  }
+}
+
+void TextOutbound::close() noexcept {
+  if (closed_ || !link_) return;
+  closed_ = true;
+  try {
+    link_->stream.set_write_timeout(net::Millis{1000});
+    link_->stream.write_all("q\r\n", 3);
+  } catch (const std::exception&) {
+    // Peer already gone.
+  }
+  link_->stream.shutdown();
+  link_->stream.close();
+}
+
+}  // namespace robogene::carrier::detail

@@ -1,0 +1,54 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "robogene/log.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+
+namespace robogene::log {
+
+namespace {
+
+Level from_env() {
+  const char* v = std::getenv("ROBOGENE_LOG");
+  if (!v) return Level::Warn;
+  if (!std::strcmp(v, "debug")) return Level::Debug;
+  if (!std::strcmp(v, "info")) return Level::Info;
+  if (!std::strcmp(v, "warn")) return Level::Warn;
+  if (!std::strcmp(v, "error")) return Level::Error;
+  if (!std::strcmp(v, "off")) return Level::Off;
+  return Level::Warn;
+}
+
+std::atomic<int>& current() {
+  static std::atomic<int> l{static_cast<int>(from_env())};
+  return l;
+}
+
+const char* tag(Level l) {
+  switch (l) {
+    case Level::Debug: return "DEBUG";
+    case Level::Info: return "INFO";
+    case Level::Warn: return "WARN";
+    case Level::Error: return "ERROR";
+    default: return "";
+  }
+}
+
+}  // namespace
+
+Level level() noexcept { return static_cast<Level>(current().load()); }
+void set_level(Level l) noexcept { current().store(static_cast<int>(l)); }
+bool enabled(Level l) noexcept { return static_cast<int>(l) >= current().load(); }
+
+void write(Level l, std::string_view who, std::string_view text) {
+  static std::mutex mutex;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::fprintf(stderr, "[%s] %.*s: %.*s\n", tag(l), static_cast<int>(who.size()), who.data(),
+               static_cast<int>(text.size()), text.data());
+}
+
+}  // namespace robogene::log
