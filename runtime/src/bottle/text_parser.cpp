@@ -124,9 +124,13 @@ class Parser {
     const std::size_t start = pos_;
     switch (peek()) {
       case '(': {
+        if (++depth_ > DecodeLimits{}.max_depth) {
+          fail(start, "lists nested deeper than the limit of " + std::to_string(DecodeLimits{}.max_depth));
+        }
         ++pos_;
         Bottle nested;
         items(nested, start);
+        --depth_;
         return Value::list(std::move(nested));
       }
       case '"': return quoted();
@@ -232,6 +236,7 @@ class Parser {
   Source src_;
   const std::string& s_;
   std::size_t pos_ = 0;
+  std::size_t depth_ = 0;  // bounded like the binary decoder's, so hostile text cannot exhaust the stack
 };
 
 }  // namespace
