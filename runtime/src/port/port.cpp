@@ -1,0 +1,367 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// Port: opening, closing, outputs and writing. Inputs are in port_input.cpp, admin messages in
+// port_admin.cpp.
+#include "robogene/port.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+
+#include "port_core.hpp"
+#include "robogene/carrier/registry.hpp"
+#include "robogene/error.hpp"
+#include "robogene/log.hpp"
+
+namespace robogene {
+
+Port::Port() : Port(PortOptions{}) {}
+Port::Port(PortOptions options) : core_(std::make_shared<Core>(options)) {}
+Port::~Port() { close(); }
+
+void Port::Core::start_listening(const net::Endpoint& at) {
+  listener = net::TcpListener::listen(at);
+  address.carrier = "tcp";
+  address.host = listener.local().host.empty() || listener.local().host == "0.0.0.0"
+                     ? "127.0.0.1"
+                     : listener.local().host;
+  address.port = listener.local().port;
+  address.name = name;
+  open = true;
+  closing = false;
+  acceptor = std::thread([self = shared_from_this()] { self->accept_loop(); });
+}
+
+void Port::open_at(const std::string& name, const net::Endpoint& at) {
+  if (core_->open) throw Error("port " + core_->name + " is already open");
+  if (name.empty() || name[0] != '/') throw Error("port name \"" + name + "\" must start with '/'");
+  core_->name = name;
+  core_->start_listening(at);
+  log::info(name, "Port " + name + " active at " + core_->address.uri());
+}
+
+void Port::open(const std::string& name, NameClient names) {
+  if (core_->open) throw Error("port " + core_->name + " is already open");
+  if (name.empty() || name[0] != '/') throw Error("port name \"" + name + "\" must start with '/'");
+  Contact reg = names.register_name(name);
+  core_->name = name;
+  core_->names = names;
+  core_->registered = true;
+  try {
+    core_->start_listening({reg.host, reg.port});
+    // What YARP clients record next to a registration (reference section 4.1).
+    const std::vector<std::string> carriers = carrier::CarrierRegistry::global().names();
+    names.set_property(name, "offers", carriers);
+    names.set_property(name, "accepts", carriers);
+    names.set_property(name, "process", {std::to_string(::getpid())});
+  } catch (...) {
+    try {
+      names.unregister(name);
+    } catch (const std::exception&) {
+    }
+    core_->registered = false;
+    core_->shutdown();
+    throw;
+  }
+  log::info(name, "Port " + name + " active at " + core_->address.uri());
+}
+
+void Port::open(const std::string& name) { open(name, NameClient::from_config()); }
+
+void Port::close() {
+  if (!core_->open.exchange(false)) return;
+  core_->shutdown();
+}
+
+bool Port::is_open() const { return core_->open; }
+const std::string& Port::name() const { return core_->name; }
+Contact Port::contact() const { return core_->address; }
+
+void Port::set_resolver(Resolver r) {
+  std::lock_guard<std::mutex> lock(core_->mutex);
+  core_->resolver = std::move(r);
+}
+
+void Port::Core::shutdown() {
+  closing = true;
+  {
+    std::lock_guard<std::mutex> lock(hand_mutex);
+    hand_cv.notify_all();
+  }
+  if (registered && names) {
+    try {
+      names->unregister(name);
+    } catch (const std::exception& e) {
+      log::warn(name, std::string("could not unregister: ") + e.what());
+    }
+    registered = false;
+  }
+  listener.interrupt();
+  if (acceptor.joinable()) acceptor.join();
+  listener.close();
+  std::vector<std::shared_ptr<OutputUnit>> outs;
+  std::list<std::shared_ptr<InputUnit>> ins;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    outs.swap(outputs);
+    for (auto& in : inputs) {
+      if (in->conn) in->conn->interrupt();
+    }
+    ins = inputs;
+  }
+  for (auto& o : outs) {
+    std::lock_guard<std::mutex> lock(o->mutex);
+    o->conn->close();
+  }
+  for (auto& in : ins) {
+    if (in->thread.joinable()) in->thread.join();
+  }
+  std::lock_guard<std::mutex> lock(mutex);
+  inputs.clear();
+}
+
+std::optional<Contact> Port::Core::resolve(const std::string& port_name) {
+  Resolver r;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    r = resolver;
+  }
+  if (r) return r(port_name);
+  if (names) return names->query(port_name);
+  return std::nullopt;
+}
+
+void Port::Core::add_unit(std::shared_ptr<OutputUnit> unit) {
+  std::lock_guard<std::mutex> lock(mutex);
+  outputs.push_back(std::move(unit));
+}
+
+void Port::Core::connect_output(const Contact& to, const std::string& carrier_name) {
+  std::string dummy;
+  remove_output_report(to.name, dummy);  // a new connection replaces an old one
+  carrier::ConnectContext ctx;
+  ctx.sender_name = name;
+  ctx.target_name = to.name;
+  ctx.timeout = options.connect_timeout;
+  ctx.max_message_size = options.max_message_size;
+  auto unit = std::make_shared<OutputUnit>();
+  unit->target = to.name;
+  unit->carrier = carrier_name.empty() ? (to.carrier.empty() ? "tcp" : to.carrier) : carrier_name;
+  unit->conn = carrier::open_connection(to.endpoint(), unit->carrier, ctx);
+  unit->conn->set_timeout(options.send_timeout);
+  log::info(name, "Sending output from " + name + " to " + to.name + " using " + unit->carrier);
+  add_unit(std::move(unit));
+}
+
+bool Port::Core::add_output_report(const std::string& target_text, std::string& report) {
+  Target t;
+  try {
+    t = parse_target(target_text);
+  } catch (const Error&) {
+    report = "Do not know how to connect to " + target_text + "\r\n";
+    return false;
+  }
+  std::optional<Contact> c;
+  try {
+    c = resolve(t.name);
+  } catch (const std::exception& e) {
+    log::warn(name, "looking up " + t.name + ": " + e.what());
+  }
+  if (!c) {
+    report = "Do not know how to connect to " + target_text + "\r\n";
+    return false;
+  }
+  c->name = t.name;
+  try {
+    connect_output(*c, t.carrier);
+  } catch (const std::exception& e) {
+    log::warn(name, "cannot connect to " + target_text + ": " + e.what());
+    report = "Cannot connect to " + target_text + "\r\n";
+    return false;
+  }
+  report = "Added connection from " + name + " to " + target_text + "\r\n";
+  return true;
+}
+
+bool Port::Core::remove_output_report(const std::string& target, std::string& report) {
+  std::vector<std::shared_ptr<OutputUnit>> gone;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = outputs.begin(); it != outputs.end();) {
+      if ((*it)->target == target) {
+        gone.push_back(*it);
+        it = outputs.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  for (auto& o : gone) {
+    std::lock_guard<std::mutex> lock(o->mutex);
+    o->conn->close();
+    log::info(name, "Removing output from " + name + " to " + target);
+  }
+  report = gone.empty() ? "Could not find an outgoing connection to " + target + "\r\n"
+                        : "Removed connection from " + name + " to " + target + "\r\n";
+  return !gone.empty();
+}
+
+bool Port::Core::remove_input_report(const std::string& from, std::string& report) {
+  bool found = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto& in : inputs) {
+      if (!in->done && in->from == from && in->conn) {
+        in->conn->interrupt();
+        found = true;
+      }
+    }
+  }
+  report = found ? "Removing connection from " + from + " to " + name + "\r\n"
+                 : "Could not find an incoming connection from " + from + "\r\n";
+  return found;
+}
+
+void Port::Core::drop_output(const std::shared_ptr<OutputUnit>& unit, const std::string& why) {
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    outputs.erase(std::remove(outputs.begin(), outputs.end(), unit), outputs.end());
+  }
+  log::warn(name, "dropping output to " + unit->target + " (" + unit->conn->peer_text() + "): " + why);
+  unit->conn->interrupt();
+}
+
+void Port::add_output(const std::string& target, const std::string& carrier) {
+  Target t = parse_target(target);
+  auto c = core_->resolve(t.name);
+  if (!c) throw Error("cannot connect " + core_->name + " to " + target + ": no such port is registered");
+  c->name = t.name;
+  core_->connect_output(*c, carrier.empty() ? t.carrier : carrier);
+}
+
+void Port::add_output(const Contact& to) { core_->connect_output(to, to.carrier); }
+
+bool Port::remove_output(const std::string& name) {
+  std::string report;
+  return core_->remove_output_report(name, report);
+}
+
+bool Port::remove_input(const std::string& name) {
+  std::string report;
+  return core_->remove_input_report(name, report);
+}
+
+std::vector<std::string> Port::output_names() const {
+  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::vector<std::string> out;
+  for (auto& o : core_->outputs) out.push_back(o->target);
+  return out;
+}
+
+std::vector<std::string> Port::input_names() const {
+  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::vector<std::string> out;
+  for (auto& in : core_->inputs) {
+    if (!in->done && in->conn) out.push_back(in->from);
+  }
+  return out;
+}
+
+void Port::set_envelope(std::string envelope) {
+  std::lock_guard<std::mutex> lock(core_->write_mutex);
+  core_->envelope = std::move(envelope);
+}
+
+bool Port::write(const Bottle& b) {
+  std::lock_guard<std::mutex> wlock(core_->write_mutex);
+  std::vector<std::shared_ptr<OutputUnit>> outs;
+  {
+    std::lock_guard<std::mutex> lock(core_->mutex);
+    outs = core_->outputs;
+  }
+  if (outs.empty()) return false;
+  carrier::OutboundMessage m;
+  m.key = 'D';
+  m.envelope = core_->envelope;
+  m.bottle = &b;
+  bool any = false;
+  for (auto& o : outs) {
+    std::lock_guard<std::mutex> lock(o->mutex);
+    try {
+      o->conn->send(m);
+      any = true;
+    } catch (const std::exception& e) {
+      core_->drop_output(o, e.what());
+    }
+  }
+  return any;
+}
+
+bool Port::write(const Bottle& b, Bottle& reply) {
+  std::lock_guard<std::mutex> wlock(core_->write_mutex);
+  std::shared_ptr<OutputUnit> o;
+  {
+    std::lock_guard<std::mutex> lock(core_->mutex);
+    if (core_->outputs.empty()) return false;
+    o = core_->outputs.front();
+  }
+  carrier::OutboundMessage m;
+  m.key = 'd';
+  m.envelope = core_->envelope;
+  m.bottle = &b;
+  std::lock_guard<std::mutex> lock(o->mutex);
+  try {
+    o->conn->send(m, &reply);
+    return true;
+  } catch (const std::exception& e) {
+    core_->drop_output(o, e.what());
+    return false;
+  }
+}
+
+void Port::set_reader(Reader r) {
+  std::lock_guard<std::mutex> lock(core_->reader_mutex);
+  core_->reader = std::move(r);
+}
+
+bool Port::read(Bottle& b, bool will_reply, net::Millis timeout, MessageInfo* info) {
+  auto& c = *core_;
+  std::unique_lock<std::mutex> lk(c.hand_mutex);
+  if (c.replying) {  // a previous read promised a reply it never gave: release that sender
+    c.replying->done = true;
+    c.replying = nullptr;
+    c.hand_cv.notify_all();
+  }
+  auto ready = [&] { return c.closing || (c.pending && !c.pending->taken); };
+  if (timeout.count() > 0) {
+    if (!c.hand_cv.wait_for(lk, timeout, ready)) return false;
+  } else {
+    c.hand_cv.wait(lk, ready);
+  }
+  if (c.closing) return false;
+  Core::Pending* p = c.pending;
+  p->taken = true;
+  b = *p->data;
+  if (info) *info = p->info;
+  c.pending = nullptr;
+  if (will_reply && p->reply) {
+    c.replying = p;
+  } else {
+    p->done = true;
+  }
+  c.hand_cv.notify_all();
+  return true;
+}
+
+void Port::reply(const Bottle& b) {
+  auto& c = *core_;
+  std::lock_guard<std::mutex> lk(c.hand_mutex);
+  if (!c.replying) return;
+  *c.replying->reply = b;
+  c.replying->done = true;
+  c.replying = nullptr;
+  c.hand_cv.notify_all();
+}
+
+}  // namespace robogene

@@ -1,0 +1,100 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The shared state behind a Port: its listener, one thread per input connection, the outputs,
+// and the hand-off between input threads and Port::read (private to src/port).
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "robogene/carrier/connection.hpp"
+#include "robogene/net/tcp_listener.hpp"
+#include "robogene/port.hpp"
+
+namespace robogene {
+
+struct OutputUnit {
+  std::string target;   // the reader's port name
+  std::string carrier;
+  std::unique_ptr<carrier::OutboundConnection> conn;
+  std::mutex mutex;     // one message at a time on a connection
+};
+
+struct InputUnit {
+  std::string from;
+  std::string carrier;
+  carrier::InboundConnection* conn = nullptr;  // valid while the thread owns it (under Core::mutex)
+  std::thread thread;
+  bool done = false;
+};
+
+struct Port::Core : std::enable_shared_from_this<Port::Core> {
+  explicit Core(PortOptions o) : options(o) {}
+
+  PortOptions options;
+  std::string name;
+  Contact address;
+  std::optional<NameClient> names;
+  bool registered = false;
+  Resolver resolver;
+
+  net::TcpListener listener;
+  std::thread acceptor;
+  std::atomic<bool> open{false};
+  std::atomic<bool> closing{false};
+
+  mutable std::mutex mutex;  // outputs, inputs, resolver
+  std::vector<std::shared_ptr<OutputUnit>> outputs;
+  std::list<std::shared_ptr<InputUnit>> inputs;
+
+  std::mutex write_mutex;  // one write at a time; guards envelope
+  std::string envelope;
+
+  std::mutex reader_mutex;
+  Reader reader;
+
+  // Hand-off to Port::read when no reader is installed.
+  struct Pending {
+    const Bottle* data = nullptr;
+    MessageInfo info;
+    Bottle* reply = nullptr;
+    bool taken = false;
+    bool done = false;
+  };
+  std::mutex hand_mutex;
+  std::condition_variable hand_cv;
+  Pending* pending = nullptr;
+  Pending* replying = nullptr;
+
+  void start_listening(const net::Endpoint& at);
+  void accept_loop();
+  void serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream);
+  // Handles one message; false ends the connection's thread.
+  bool handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnection>& conn,
+              carrier::InboundMessage& msg);
+  void deliver(const Bottle& data, const MessageInfo& info, Bottle* reply);
+  void reap_finished_inputs();
+  void shutdown();
+
+  // Operations shared by the API, admin messages and text commands; each returns YARP's
+  // one-line report ("Added connection from /w to tcp://r\r\n") and whether it worked.
+  bool add_output_report(const std::string& target_text, std::string& report);
+  void connect_output(const Contact& to, const std::string& carrier);
+  bool remove_output_report(const std::string& target, std::string& report);
+  bool remove_input_report(const std::string& from, std::string& report);
+  std::string describe() const;
+  Bottle admin(const Bottle& cmd);
+  void add_unit(std::shared_ptr<OutputUnit> unit);
+  void drop_output(const std::shared_ptr<OutputUnit>& unit, const std::string& why);
+  std::optional<Contact> resolve(const std::string& port_name);
+};
+
+}  // namespace robogene

@@ -1,0 +1,271 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// Input side of a Port: accepting connections, one thread per connection, the message loop
+// with data, admin, reverse, quit and the text-mode commands of reference section 3.5.
+#include <string>
+
+#include "port_core.hpp"
+#include "robogene/carrier/registry.hpp"
+#include "robogene/error.hpp"
+#include "robogene/log.hpp"
+
+namespace robogene {
+
+namespace {
+
+const char kHelp[] =
+    "This is a YARP-compatible port. Commands, one per line:\r\n"
+    "*       describe this port and its connections\r\n"
+    "d       the next line is data for the port's owner (a reply may follow)\r\n"
+    "do      the same as \"d\" without a reply (\"data only\")\r\n"
+    "q       disconnect\r\n"
+    "r       reverse this connection: receive what the port writes\r\n"
+    "/port   send this port's output to /port as well\r\n"
+    "!/port  stop sending output to /port\r\n"
+    "~/port  stop receiving input from /port\r\n"
+    "a       the next line is an administrative message ([help] lists them)\r\n"
+    "?       this help\r\n";
+
+const char kNotUnderstood[] =
+    "Port command not understood.\r\n"
+    "Type d to send data to the port's owner.\r\n"
+    "Type ? for help.\r\n";
+
+bool rooted(const std::string& name) { return !name.empty() && name[0] == '/'; }
+
+}  // namespace
+
+void Port::Core::accept_loop() {
+  while (!closing) {
+    auto s = listener.accept();
+    if (!s) {
+      if (closing) break;
+      continue;
+    }
+    reap_finished_inputs();
+    auto unit = std::make_shared<InputUnit>();
+    std::lock_guard<std::mutex> lock(mutex);
+    if (closing) break;
+    unit->thread = std::thread(
+        [self = shared_from_this(), unit, stream = std::move(*s)]() mutable {
+          self->serve(unit, std::move(stream));
+        });
+    inputs.push_back(unit);
+  }
+}
+
+void Port::Core::reap_finished_inputs() {
+  std::list<std::shared_ptr<InputUnit>> finished;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = inputs.begin(); it != inputs.end();) {
+      if ((*it)->done) {
+        finished.push_back(*it);
+        it = inputs.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  for (auto& f : finished) {
+    if (f->thread.joinable()) f->thread.join();
+  }
+}
+
+void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
+  carrier::AcceptContext ctx;
+  ctx.local_name = name;
+  ctx.max_message_size = options.max_message_size;
+  ctx.handshake_timeout = options.handshake_timeout;
+  std::string peer = stream.peer_text();
+  std::unique_ptr<carrier::InboundConnection> conn;
+  try {
+    conn = carrier::accept_connection(std::move(stream), ctx);
+  } catch (const std::exception& e) {
+    log::warn(name, std::string("rejected a connection: ") + e.what());
+    std::lock_guard<std::mutex> lock(mutex);
+    unit->done = true;
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    unit->from = conn->remote_name();
+    unit->carrier = conn->carrier_name();
+    if (closing) {
+      unit->done = true;
+      return;
+    }
+    // A new rooted connection from the same source replaces older ones (YARP does the same).
+    if (rooted(unit->from)) {
+      for (auto& other : inputs) {
+        if (other != unit && !other->done && other->from == unit->from && other->conn) {
+          other->conn->interrupt();
+        }
+      }
+    }
+    unit->conn = conn.get();
+  }
+  const bool noticed = rooted(unit->from);
+  if (noticed) {
+    log::info(name, "Receiving input from " + unit->from + " to " + name + " using " + unit->carrier);
+  }
+  carrier::InboundMessage msg;
+  try {
+    while (!closing && conn && conn->read(msg)) {
+      if (!handle(*unit, conn, msg)) break;
+    }
+  } catch (const std::exception& e) {
+    if (!closing) {
+      log::warn(name, "input from " + unit->from + " (" + peer + ") closed: " + e.what());
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    unit->conn = nullptr;
+    unit->done = true;
+  }
+  if (noticed) log::info(name, "Removing input from " + unit->from + " to " + name);
+}
+
+bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnection>& conn,
+                        carrier::InboundMessage& msg) {
+  auto& c = *conn;
+  switch (msg.key) {
+    case 'd':
+    case 'D': {
+      Bottle data;
+      try {
+        DecodeLimits limits;
+        limits.max_bytes = options.max_message_size;
+        data = msg.bottle(limits);
+      } catch (const ParseError& e) {
+        log::warn(name, "dropped a message from " + unit.from + " (" + c.peer_text() +
+                            "): " + e.what() + " (position " + std::to_string(e.position()) + ")");
+        c.finish();
+        return true;
+      }
+      MessageInfo info{unit.from, unit.carrier, msg.envelope, msg.reply_expected};
+      Bottle reply;
+      deliver(data, info, msg.reply_expected ? &reply : nullptr);
+      if (msg.reply_expected && (!reply.empty() || !c.is_text())) c.reply(reply);
+      c.finish();
+      return true;
+    }
+    case 'a': {
+      Bottle cmd;
+      try {
+        cmd = msg.bottle();
+      } catch (const ParseError& e) {
+        c.reply(Bottle{Value::vocab("fail"), Value(std::string("cannot parse admin message: ") + e.what())});
+        c.finish();
+        return true;
+      }
+      c.reply(admin(cmd));
+      c.finish();
+      return true;
+    }
+    case 'r': {
+      c.finish();
+      auto out = std::make_shared<OutputUnit>();
+      out->target = unit.from;
+      out->carrier = unit.carrier;
+      out->conn = c.reverse();
+      out->conn->set_timeout(options.send_timeout);
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        unit.conn = nullptr;
+      }
+      log::info(name, "Sending output from " + name + " to " + unit.from + " using " +
+                          unit.carrier + " (reversed)");
+      add_unit(std::move(out));
+      return false;
+    }
+    case 'q':
+      c.finish();
+      return false;
+    case '/': {
+      std::string report;
+      add_output_report(msg.command, report);
+      c.reply_raw(report.data(), report.size());
+      break;
+    }
+    case '!': {
+      std::string report;
+      remove_output_report(msg.command.substr(1), report);
+      c.reply_raw(report.data(), report.size());
+      break;
+    }
+    case '~': {
+      std::string report;
+      remove_input_report(msg.command.substr(1), report);
+      c.reply_raw(report.data(), report.size());
+      break;
+    }
+    case '*': {
+      std::string text = describe();
+      c.reply_raw(text.data(), text.size());
+      break;
+    }
+    case '?':
+    case 'h':
+      c.reply_raw(kHelp, sizeof kHelp - 1);
+      break;
+    default:
+      c.reply_raw(kNotUnderstood, sizeof kNotUnderstood - 1);
+      break;
+  }
+  c.finish();
+  return true;
+}
+
+void Port::Core::deliver(const Bottle& data, const MessageInfo& info, Bottle* reply) {
+  Reader r;
+  {
+    std::lock_guard<std::mutex> lock(reader_mutex);
+    r = reader;
+  }
+  if (r) {
+    try {
+      r(data, info, reply);
+    } catch (const std::exception& e) {
+      log::warn(name, "reader failed on a message from " + info.from + ": " + e.what());
+    }
+    return;
+  }
+  // No reader installed: wait for Port::read, one message at a time.
+  std::unique_lock<std::mutex> lk(hand_mutex);
+  hand_cv.wait(lk, [&] { return closing || pending == nullptr; });
+  if (closing) return;
+  Pending p;
+  p.data = &data;
+  p.info = info;
+  p.reply = reply;
+  pending = &p;
+  hand_cv.notify_all();
+  hand_cv.wait(lk, [&] { return closing || p.done; });
+  if (pending == &p) pending = nullptr;
+  if (replying == &p) replying = nullptr;
+  hand_cv.notify_all();
+}
+
+std::string Port::Core::describe() const {
+  std::string out = "This is " + name + " at " + address.uri() + "\r\n";
+  std::lock_guard<std::mutex> lock(mutex);
+  int n = 0;
+  for (auto& o : outputs) {
+    out += "There is an output connection from " + name + " to " + o->target + " using " + o->carrier + "\r\n";
+    ++n;
+  }
+  if (!n) out += "There are no outgoing connections\r\n";
+  n = 0;
+  for (auto& in : inputs) {
+    if (in->done || !in->conn) continue;
+    out += "There is an input connection from " + in->from + " to " + name + " using " + in->carrier + "\r\n";
+    ++n;
+  }
+  if (!n) out += "There are no incoming connections\r\n";
+  return out;
+}
+
+}  // namespace robogene
