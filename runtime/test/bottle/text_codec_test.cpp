@@ -8,6 +8,7 @@
 #include <clocale>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
 
@@ -40,6 +41,9 @@ TEST(TextCodec, IntegerWidthFollowsTheValue) {
   EXPECT_EQ(b[2].type(), Type::Int32);
   EXPECT_EQ(b[3].type(), Type::Int64);
   EXPECT_EQ(b[4], Value::int64(4294967295));
+  // Beyond int64 the value saturates, as strtoll does in YARP.
+  EXPECT_EQ(Bottle::from_text("99999999999999999999 -99999999999999999999"),
+            (Bottle{Value::int64(INT64_MAX), Value::int64(INT64_MIN)}));
 }
 
 TEST(TextCodec, SpecialFloats) {
