@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <string>
 
-#include "name_sessions.hpp"
+#include <sys/socket.h>
+
+#include "robogene/carrier/registry.hpp"
 #include "robogene/error.hpp"
-#include "robogene/net/stream_reader.hpp"
-#include "yarp_wire.hpp"
+#include "robogene/name/name_ser_carrier.hpp"
+#include "root_port.hpp"
 
 namespace robogene::name {
 
@@ -18,13 +20,17 @@ struct NameServer::Session {
   std::atomic<bool> finished{false};
   std::mutex peer_mutex;
   Peer peer;
+  carrier::InboundConnection* connection = nullptr;  // once the handshake is done; for stop()
 };
 
 NameServer::NameServer(NameService& service, const net::Endpoint& at, NameServerLimits limits)
-    : service_(service), limits_(limits), listener_(net::TcpListener::listen(at)) {}
+    : NameServer(service, net::TcpListener::listen(at), limits) {}
 
 NameServer::NameServer(NameService& service, net::TcpListener listener, NameServerLimits limits)
-    : service_(service), limits_(limits), listener_(std::move(listener)) {}
+    : service_(service), limits_(limits), listener_(std::move(listener)) {
+  // /root is reached by YARP clients with name_ser as well as with every ordinary carrier.
+  carrier::CarrierRegistry::global().add(make_name_ser_carrier());
+}
 
 NameServer::~NameServer() {
   stop();
@@ -38,7 +44,14 @@ void NameServer::stop() noexcept {
   stopping_ = true;
   listener_.interrupt();
   std::lock_guard<std::mutex> lock(sessions_mutex_);
-  for (auto& s : sessions_) s->stream.shutdown();
+  for (auto& s : sessions_) {
+    std::lock_guard<std::mutex> p(s->peer_mutex);
+    if (s->connection) {
+      s->connection->interrupt();
+    } else {
+      s->stream.shutdown();
+    }
+  }
 }
 
 std::vector<NameServer::Peer> NameServer::peers() {
@@ -106,42 +119,36 @@ void NameServer::run() {
 
 void NameServer::serve(Session& session) {
   net::TcpStream& stream = session.stream;
+  const std::string peer = stream.peer_text();
+  std::unique_ptr<carrier::InboundConnection> in;  // outlives the pointer stop() may use
   try {
-    stream.set_read_timeout(net::Millis{limits_.handshake_timeout_ms});
     stream.set_write_timeout(net::Millis{limits_.write_timeout_ms});
-    net::StreamReader reader(stream);
-    detail::SessionContext context{
-        service_,
-        limits_,
-        stream,
-        reader,
-        "tcp://" + service_.config().host + ":" + std::to_string(service_.config().port) + "/",
-        [&session](const std::string& name, const std::string& carrier) {
-          std::lock_guard<std::mutex> lock(session.peer_mutex);
-          session.peer = Peer{name, carrier};
-        },
-        [this] { return peers(); },
-    };
-    if (!reader.wait_for_data()) return;  // connected and left: a port-presence check
-    wire::Header header;
-    reader.read_exact(header.data(), header.size());
-    auto number = wire::read_yarp_number(header);
-    if (wire::starts_with(header, "NAME_SER")) {
-      detail::serve_name_ser(context, header);
-    } else if (wire::starts_with(header, "CONNECT ")) {
-      detail::serve_text(context, false);
-    } else if (wire::starts_with(header, "CONNACK ")) {
-      detail::serve_text(context, true);
-    } else if (number && *number == wire::kTcpSpecifier) {
-      detail::serve_tcp(context, true);
-    } else if (number && *number == wire::kFastTcpSpecifier) {
-      detail::serve_tcp(context, false);
-    } else {
-      detail::refuse_unknown_carrier(context, header);
+    // A peer that connects and leaves without a byte is checking that we are alive: not an error.
+    if (!stream.wait_readable(net::Millis{limits_.handshake_timeout_ms})) return;
+    char first;
+    if (::recv(stream.fd(), &first, 1, MSG_PEEK) <= 0) return;
+
+    carrier::AcceptContext ctx;
+    ctx.local_name = "/root";
+    ctx.max_message_size = limits_.max_message;
+    ctx.max_line_length = limits_.max_line;
+    ctx.handshake_timeout = net::Millis{limits_.handshake_timeout_ms};
+    detail::RootPortContext root{service_, stream.peer().host,
+                                 "tcp://" + service_.config().host + ":" + std::to_string(service_.config().port) + "/",
+                                 [this] { return peers(); }};
+    in = carrier::accept_connection(std::move(stream), ctx);
+    {
+      std::lock_guard<std::mutex> lock(session.peer_mutex);
+      session.peer = Peer{in->remote_name(), in->carrier_name()};
+      session.connection = in.get();
     }
+    if (stopping_) return;
+    detail::serve_root_messages(root, *in);
   } catch (const Error& e) {
-    if (!stopping_) std::fprintf(stderr, "robogene server: %s: %s\n", stream.peer_text().c_str(), e.what());
+    if (!stopping_) std::fprintf(stderr, "robogene server: %s: %s\n", peer.c_str(), e.what());
   }
+  std::lock_guard<std::mutex> lock(session.peer_mutex);
+  session.connection = nullptr;
 }
 
 }  // namespace robogene::name
