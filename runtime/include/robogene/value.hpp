@@ -77,8 +77,11 @@ class Value {
   bool is_list() const noexcept { return type_ == Type::List; }
 
   // Accessors convert between numeric types (as YARP does) and throw robogene::Error naming the
-  // expected and actual type otherwise. as_vocab() also accepts a string (YARP's asVocab32 does,
-  // which is how `get axes` typed at `yarp rpc` matches [get] [axes]).
+  // expected and actual type otherwise ("expected int32, got string"). Integer accessors also take
+  // a vocab (its code, as YARP's asInt32 does) and truncate floats toward zero; a conversion that
+  // cannot hold the value (NaN, out of range, int64 -> int32 overflow) throws instead of wrapping.
+  // as_vocab() also accepts a string (YARP's asVocab32 does, which is how `get axes` typed at
+  // `yarp rpc` matches [get] [axes]) and an integer that fits in 32 bits.
   std::int32_t as_int32() const;
   std::int64_t as_int64() const;
   double as_float64() const;
