@@ -1,0 +1,68 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Quantities per head: purchased parts counted in the CAD assembly, belts derived from the pulleys, and
+the parts of every KiCad board BOM; each looked up in the catalog. Made parts are listed with their process."""
+from __future__ import annotations
+
+from collections import Counter, OrderedDict
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import board
+from .catalog import Catalog, CatalogError, Item
+
+
+@dataclass
+class Line:
+    item: Item
+    per_head: int
+    used_in: list[str] = field(default_factory=list)   # part instances or board references
+
+
+@dataclass
+class MadePart:
+    design: str
+    kind: str          # machined / printed
+    material: str
+    per_head: int
+
+
+@dataclass
+class Bom:
+    lines: list[Line]
+    made: list[MadePart]
+    currency: str
+    boards: list[str]
+
+    def cost_per_head(self, heads: int = 1) -> float:
+        """Cost of the purchased parts of one head when `heads` heads are ordered together."""
+        return sum(line.per_head * line.item.unit_price(line.per_head * heads) for line in self.lines)
+
+
+def collect(parts, belts, board_boms: list[Path], catalog: Catalog) -> Bom:
+    """parts: robogene_head Part objects; belts: (catalog key, joint, teeth) from mounts.belts."""
+    counts: OrderedDict[str, list[str]] = OrderedDict()
+    for part in parts:
+        if part.kind == "purchased":
+            counts.setdefault(part.design, []).append(part.name)
+    for key, joint, teeth in belts:
+        counts.setdefault(key, []).append(f"{joint} belt ({teeth} teeth)")
+    lines = [Line(catalog.get(key, f"CAD part {users[0]}"), len(users), users) for key, users in counts.items()]
+    by_mpn = catalog.by_mpn()
+    board_names = []
+    for path in board_boms:
+        board_names.append(path.stem)
+        for entry in board.read(path):
+            item = by_mpn.get(entry.mpn.casefold())
+            if item is None:
+                raise CatalogError(f"{catalog.path}: no entry with mpn {entry.mpn!r} (needed by {entry.source}, "
+                                   f"{entry.references or entry.value}); add it under parts:")
+            existing = next((l for l in lines if l.item.key == item.key), None)
+            if existing is None:
+                existing = Line(item, 0, [])
+                lines.append(existing)
+            existing.per_head += entry.quantity
+            existing.used_in.append(f"{path.stem}: {entry.references}")
+    made_counts = Counter((p.design, p.kind, p.material) for p in parts if p.kind in ("machined", "printed"))
+    made = [MadePart(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
+    return Bom(lines, made, catalog.currency, board_names)

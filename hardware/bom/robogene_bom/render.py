@@ -1,0 +1,105 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Write a BOM as an ordering CSV, a Markdown table for the docs and a standalone HTML page."""
+from __future__ import annotations
+
+import csv
+import html
+import io
+
+from .collect import Bom
+
+COLUMNS = ["key", "description", "manufacturer", "mpn", "supplier", "qty_per_head", "qty_batch",
+           "unit_price_batch", "line_cost_batch", "datasheet"]
+
+
+def _money(value: float) -> str:
+    return f"{value:,.2f}"
+
+
+def rows(bom: Bom, batch: int) -> list[dict]:
+    out = []
+    for line in bom.lines:
+        qty = line.per_head * batch
+        unit = line.item.unit_price(qty)
+        out.append({"key": line.item.key, "description": line.item.description, "manufacturer": line.item.manufacturer,
+                    "mpn": line.item.mpn, "supplier": line.item.supplier, "qty_per_head": line.per_head,
+                    "qty_batch": qty, "unit_price_batch": f"{unit:.2f}", "line_cost_batch": f"{unit * qty:.2f}",
+                    "datasheet": line.item.datasheet})
+    return out
+
+
+def to_csv(bom: Bom, batch: int) -> str:
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows(bom, batch))
+    return buf.getvalue()
+
+
+def made_csv(bom: Bom, batch: int) -> str:
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["design", "process", "material", "qty_per_head", "qty_batch", "step", "stl"])
+    for m in bom.made:
+        writer.writerow([m.design, m.kind, m.material, m.per_head, m.per_head * batch, f"step/{m.design}.step",
+                         f"stl/{m.design}.stl" if m.kind == "printed" else ""])
+    return buf.getvalue()
+
+
+def totals(bom: Bom, batch: int) -> tuple[float, float, float]:
+    one = bom.cost_per_head(1)
+    each_in_batch = bom.cost_per_head(batch)
+    return one, each_in_batch, each_in_batch * batch
+
+
+def _md_escape(text: str) -> str:
+    return text.replace("|", "\\|")
+
+
+def to_markdown(bom: Bom, batch: int) -> str:
+    one, each, total = totals(bom, batch)
+    c = bom.currency
+    out = [f"| # | part | manufacturer | MPN | qty/head | unit ({c}, batch of {batch}) | line ({c}, batch) |",
+           "|---:|---|---|---|---:|---:|---:|"]
+    for i, r in enumerate(rows(bom, batch), start=1):
+        out.append(f"| {i} | [{_md_escape(r['description'])}]({r['datasheet']}) | {_md_escape(r['manufacturer'])} | "
+                   f"{_md_escape(r['mpn'])} | {r['qty_per_head']} | {r['unit_price_batch']} | {r['line_cost_batch']} |")
+    out += ["", f"Purchased parts: **{c} {_money(one)} for one head**, {c} {_money(each)} per head in a batch of "
+                f"{batch} ({c} {_money(total)} for the batch). Estimated list prices, not quotes.", ""]
+    out += ["| made part | process | material | qty/head |", "|---|---|---|---:|"]
+    out += [f"| {m.design} | {m.kind} | {m.material} | {m.per_head} |" for m in bom.made]
+    if not bom.boards:
+        out += ["", "The motor-control boards are not included yet: their BOM merges in once the KiCad boards exist."]
+    else:
+        out += ["", "Includes the parts of the boards: " + ", ".join(bom.boards) + "."]
+    return "\n".join(out) + "\n"
+
+
+def to_html(bom: Bom, batch: int, title: str) -> str:
+    one, each, total = totals(bom, batch)
+    c = html.escape(bom.currency)
+    e = html.escape
+    body = [f"<h1>{e(title)}</h1>",
+            f"<p class=sum>Purchased parts: <b>{c} {_money(one)}</b> for one head; {c} {_money(each)} per head in a "
+            f"batch of {batch} (<b>{c} {_money(total)}</b> for the batch). Estimated list prices, not quotes.</p>",
+            "<table><thead><tr><th>#</th><th>part</th><th>manufacturer</th><th>MPN</th><th>supplier</th>"
+            f"<th>qty/head</th><th>qty (batch)</th><th>unit {c}</th><th>line {c}</th></tr></thead><tbody>"]
+    for i, r in enumerate(rows(bom, batch), start=1):
+        body.append(f"<tr><td>{i}</td><td><a href=\"{e(r['datasheet'])}\">{e(r['description'])}</a></td>"
+                    f"<td>{e(r['manufacturer'])}</td><td>{e(r['mpn'])}</td><td>{e(r['supplier'])}</td>"
+                    f"<td class=n>{r['qty_per_head']}</td><td class=n>{r['qty_batch']}</td>"
+                    f"<td class=n>{r['unit_price_batch']}</td><td class=n>{r['line_cost_batch']}</td></tr>")
+    body.append(f"</tbody><tfoot><tr><td colspan=8>total for {batch} heads</td><td class=n>{_money(total)}</td></tr>"
+                "</tfoot></table>")
+    body.append("<h2>Made parts</h2><table><thead><tr><th>design</th><th>process</th><th>material</th>"
+                "<th>qty/head</th></tr></thead><tbody>")
+    body += [f"<tr><td>{e(m.design)}</td><td>{e(m.kind)}</td><td>{e(m.material)}</td><td class=n>{m.per_head}</td></tr>"
+             for m in bom.made]
+    body.append("</tbody></table>")
+    style = ("body{font-family:sans-serif;margin:2em;max-width:75em}table{border-collapse:collapse;width:100%}"
+             "td,th{border:1px solid #ccc;padding:.3em .5em;text-align:left}td.n{text-align:right}"
+             "thead{background:#eef}tfoot{font-weight:bold}")
+    return (f"<!DOCTYPE html>\n<!-- SPDX-FileCopyrightText: 2026 Robogene contributors -->\n"
+            f"<!-- SPDX-License-Identifier: CERN-OHL-S-2.0 -->\n<html lang=en><head><meta charset=utf-8>"
+            f"<title>{e(title)}</title><style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")

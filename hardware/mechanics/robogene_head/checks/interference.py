@@ -1,0 +1,174 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Interference and clearance over a sweep of every joint's range.
+
+Two parts interfere when their common volume exceeds VOLUME_TOLERANCE. Parts on different links that touch
+(distance below the fit tolerance) must be a declared fit (a bearing on its shaft, a pulley on its shaft...);
+any other contact or overlap is a failure. A pair's result only depends on the relative pose of its two links,
+so results are cached by that pose and each sweep pose only pays for the pairs that moved."""
+from __future__ import annotations
+
+import fnmatch
+import itertools
+from dataclasses import dataclass, field
+
+import numpy as np
+from OCP.BRepExtrema import BRepExtrema_DistShapeShape
+
+from .. import kinematics
+from ..assembly import Assembly, Placed
+from ..params import CONTROL_JOINTS, HeadParameters
+
+VOLUME_TOLERANCE = 0.5   # mm^3: below this a common volume is boolean noise on touching faces
+NEAR = 2.0               # mm: pairs whose bounding boxes are further apart are not measured exactly
+
+# Designed contacts between parts on different links: (pattern, pattern). A fit is where two links meet.
+FITS = [
+    ("neck_pitch_bearing_*", "neck_pitch_stage"),
+    ("neck_pitch_gearhead", "neck_pitch_stage"),
+    ("neck_roll_bearing_*", "neck_roll_stage"),
+    ("neck_roll_gearhead", "neck_roll_stage"),
+    ("neck_yaw_bearing", "neck_roll_stage"),
+    ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
+    ("*_eye_pan_gearhead", "*_eye_cup"),
+]
+
+
+def is_fit(a: str, b: str) -> bool:
+    return any((fnmatch.fnmatch(a, p) and fnmatch.fnmatch(b, q)) or (fnmatch.fnmatch(b, p) and fnmatch.fnmatch(a, q))
+               for p, q in FITS)
+
+
+def sweep_poses(params: HeadParameters, samples: int = 5) -> list[dict[str, float]]:
+    """Each control joint over its range with the others at zero, then every corner of the neck and tilt ranges
+    with the eyes alternately fully converged to one side and parallel to the other."""
+    poses = [{}]
+    for name in CONTROL_JOINTS:
+        lo, hi = params.control_limits[name]
+        for k in range(samples):
+            poses.append({name: lo + (hi - lo) * k / (samples - 1)})
+    lim = params.control_limits
+    eyes = [(lim["eyes_version"][0], lim["eyes_vergence"][1]), (lim["eyes_version"][1], lim["eyes_vergence"][0])]
+    corners = itertools.product(*[lim[n] for n in ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt")])
+    for k, (p, r, y, t) in enumerate(corners):
+        vs, vg = eyes[k % 2]
+        poses.append({"neck_pitch": p, "neck_roll": r, "neck_yaw": y, "eyes_tilt": t,
+                      "eyes_version": vs, "eyes_vergence": vg})
+    return poses
+
+
+@dataclass
+class PairResult:
+    a: str
+    b: str
+    distance: float | None      # None: further apart than NEAR
+    overlap: float = 0.0        # common volume, mm^3
+    pose: dict = field(default_factory=dict)
+
+
+@dataclass
+class Report:
+    poses: int
+    pairs_checked: int
+    interferences: list[PairResult]
+    undeclared_contacts: list[PairResult]
+    clearances: dict[tuple[str, str], PairResult]   # closest approach per moving pair over the sweep
+
+    @property
+    def ok(self) -> bool:
+        return not self.interferences and not self.undeclared_contacts
+
+
+def _bbox(shape):
+    bb = shape.BoundingBox()
+    return np.array([bb.xmin, bb.ymin, bb.zmin]), np.array([bb.xmax, bb.ymax, bb.zmax])
+
+
+def _distance(s1, s2) -> float:
+    tool = BRepExtrema_DistShapeShape(s1.wrapped, s2.wrapped)
+    tool.Perform()
+    if not tool.IsDone():
+        raise RuntimeError("BRepExtrema failed")
+    return tool.Value()
+
+
+def check(params: HeadParameters, assembly: Assembly | None = None, poses=None, progress=None) -> Report:
+    assembly = assembly or Assembly(params)
+    poses = poses if poses is not None else sweep_poses(params)
+    fit_tol = params.geometry("clearances").num("fit_tolerance", positive=True)
+    cache: dict = {}
+    interferences, contacts, clearances = [], [], {}
+    checked = 0
+    for index, pose in enumerate(poses):
+        if progress:
+            progress(index, len(poses))
+        placed = assembly.pose(pose)
+        boxes = [_bbox(p.shape) for p in placed]
+        for i, j in itertools.combinations(range(len(placed)), 2):
+            pa, pb = placed[i], placed[j]
+            lo = np.maximum(boxes[i][0], boxes[j][0])
+            hi = np.minimum(boxes[i][1], boxes[j][1])
+            if np.any(lo - hi > NEAR):
+                continue
+            rel = np.round(np.linalg.inv(pa.world) @ pb.world, 6)
+            key = (pa.part.name, pb.part.name, rel.tobytes())
+            if key not in cache:
+                checked += 1
+                cache[key] = _pair(pa, pb, fit_tol)
+            dist, overlap = cache[key]
+            moving = pa.part.link != pb.part.link
+            result = PairResult(pa.part.name, pb.part.name, dist, overlap, pose)
+            if overlap > VOLUME_TOLERANCE:
+                interferences.append(result)
+            elif moving and dist is not None and dist < fit_tol and not is_fit(pa.part.name, pb.part.name):
+                contacts.append(result)
+            if moving and dist is not None and not is_fit(pa.part.name, pb.part.name):
+                name = (pa.part.name, pb.part.name)
+                if name not in clearances or dist < clearances[name].distance:
+                    clearances[name] = result
+    return Report(len(poses), checked, _unique(interferences), _unique(contacts), clearances)
+
+
+def _pair(pa: Placed, pb: Placed, fit_tol: float):
+    dist = _distance(pa.shape, pb.shape)
+    if dist > NEAR:
+        return None, 0.0
+    overlap = 0.0
+    if dist < fit_tol:
+        overlap = pa.shape.intersect(pb.shape).Volume()
+    return dist, overlap
+
+
+def _unique(results: list[PairResult]) -> list[PairResult]:
+    seen, out = set(), []
+    for r in results:
+        if (r.a, r.b) not in seen:
+            seen.add((r.a, r.b))
+            out.append(r)
+    return out
+
+
+def format_report(report: Report, minimum: float) -> str:
+    lines = [f"interference check: {report.poses} poses, {report.pairs_checked} pair evaluations",
+             f"interferences: {len(report.interferences)}"]
+    for r in report.interferences:
+        lines.append(f"  INTERFERENCE {r.a} x {r.b}: {r.overlap:.2f} mm^3 at {r.pose}")
+    lines.append(f"undeclared contacts between moving parts: {len(report.undeclared_contacts)}")
+    for r in report.undeclared_contacts:
+        lines.append(f"  CONTACT {r.a} x {r.b}: {r.distance:.3f} mm at {r.pose}")
+    lines.append(f"closest approach of moving pairs (minimum wanted {minimum} mm):")
+    for (a, b), r in sorted(report.clearances.items(), key=lambda kv: kv[1].distance):
+        flag = "  LOW" if r.distance < minimum else ""
+        lines.append(f"  {r.distance:7.3f} mm  {a} x {b}  at {r.pose}{flag}")
+    return "\n".join(lines)
+
+
+def report_json(report: Report, minimum: float) -> dict:
+    def row(r: PairResult) -> dict:
+        return {"a": r.a, "b": r.b, "distance_mm": r.distance, "overlap_mm3": r.overlap, "pose": r.pose}
+    return {"ok": report.ok, "poses": report.poses, "pair_evaluations": report.pairs_checked,
+            "minimum_clearance_wanted_mm": minimum,
+            "interferences": [row(r) for r in report.interferences],
+            "undeclared_contacts": [row(r) for r in report.undeclared_contacts],
+            "declared_fits": [list(f) for f in FITS],
+            "closest_approach": [row(r) for r in sorted(report.clearances.values(), key=lambda r: r.distance)]}

@@ -1,0 +1,60 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Writers for the fabrication package: STEP, STL, link meshes, assembly STEP/GLB, and geometry hashes."""
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+import cadquery as cq
+from OCP.BRepTools import BRepTools
+from OCP.BRepMesh import BRepMesh_IncrementalMesh
+from OCP.StlAPI import StlAPI_Writer
+
+from .parts import Part
+
+LINEAR_TOLERANCE = 0.05   # mm chordal deviation of STL meshes
+ANGULAR_TOLERANCE = 0.2   # rad
+
+
+def shape_hash(shape: cq.Shape, *extra: str) -> str:
+    """A content hash of the exact B-rep (plus any extra labels): equal geometry -> equal hash."""
+    import io
+    import os
+    import tempfile
+    fd, tmp = tempfile.mkstemp(suffix=".brep")
+    os.close(fd)
+    try:
+        BRepTools.Write_s(shape.wrapped, tmp)
+        data = Path(tmp).read_bytes()
+    finally:
+        os.unlink(tmp)
+    h = hashlib.sha256(data)
+    for label in extra:
+        h.update(b"\0" + label.encode())
+    return h.hexdigest()
+
+
+def write_step(shape: cq.Shape, path: Path, name: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    assy = cq.Assembly(shape, name=name)
+    assy.export(str(path), "STEP")
+
+
+def write_stl(shape: cq.Shape, path: Path) -> None:
+    """Binary STL of a closed shape, meshed with the package's tolerances."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    mesh = BRepMesh_IncrementalMesh(shape.wrapped, LINEAR_TOLERANCE, False, ANGULAR_TOLERANCE, True)
+    mesh.Perform()
+    writer = StlAPI_Writer()
+    writer.ASCIIMode = False
+    if not writer.Write(shape.wrapped, str(path)):
+        raise RuntimeError(f"STL export failed: {path}")
+
+
+def link_solid(parts: list[Part]) -> cq.Shape:
+    """The parts of one link fused into as few solids as possible, so the mesh has no internal faces and
+    touching parts do not share edges between separate shells."""
+    shapes = [p.shape for p in parts if p.kind != "reserved"]
+    fused = shapes[0].fuse(*shapes[1:]) if len(shapes) > 1 else shapes[0]
+    return fused.clean()

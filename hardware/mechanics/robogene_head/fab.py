@@ -1,0 +1,263 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Build the head's fabrication package into build/fab/ (python -m robogene_head.fab --out build/fab).
+
+Each output is keyed by a content hash of what it is made from (the part's exact B-rep, the placements,
+the parameter file...), so a second run only rebuilds what changed. Any failed check stops the build
+with a message naming the part and the defect."""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from . import kinematics, massprops, openscad, render, urdf
+from .assembly import Assembly
+from .cache import Cache, digest
+from .checks import interference, mesh, validity
+from .export import link_solid, shape_hash, write_step, write_stl
+from .params import ParameterError, load
+from .progress import Progress
+
+MECHANICS = Path(__file__).resolve().parents[1]
+REPO = MECHANICS.parents[1]
+
+
+class BuildError(RuntimeError):
+    pass
+
+
+def _placement_key(part) -> list:
+    m = part.placement.wrapped.Transformation()
+    return [round(m.Value(i, j), 9) for i in (1, 2, 3) for j in (1, 2, 3, 4)]
+
+
+def designs_of(parts):
+    out = {}
+    for part in parts:
+        entry = out.setdefault(part.design, {"part": part, "instances": []})
+        entry["instances"].append(part.name)
+    return out
+
+
+def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: int | None, progress: Progress) -> dict:
+    out.mkdir(parents=True, exist_ok=True)
+    cache = Cache(out / ".cache" / "state.json")
+    params = load(params_path)
+    params_text = params.path.read_bytes()
+    assembly = Assembly(params)
+    parts = assembly.parts
+    progress.note(f"{len(parts)} parts from {params.path}")
+
+    # 1. Every part is one valid solid.
+    bad = [c for c in validity.check_all(parts) if not c.ok]
+    if bad:
+        raise BuildError("invalid solids: " + "; ".join(
+            f"{c.name} (valid={c.valid}, solids={c.solids}, closed={c.closed}, volume={c.volume:.3f})" for c in bad))
+
+    # 2. STEP per designed/purchased part, STL per printed part.
+    designs = designs_of(parts)
+    hashes = {}
+    summary = []
+    for i, (design, entry) in enumerate(sorted(designs.items())):
+        part = entry["part"]
+        h = shape_hash(part.local, part.kind, part.material)
+        hashes[design] = h
+        outputs = [out / "step" / f"{design}.step"]
+        if part.kind == "printed":
+            outputs.append(out / "stl" / f"{design}.stl")
+        fresh = cache.fresh(f"design:{design}", h, outputs)
+        progress.step("parts", i, len(designs), design, "unchanged" if fresh else "export")
+        if not fresh:
+            write_step(part.local, outputs[0], design)
+            if part.kind == "printed":
+                write_stl(part.local, outputs[1])
+            cache.record(f"design:{design}", h)
+        summary.append({"design": design, "kind": part.kind, "material": part.material, "quantity": len(entry["instances"]),
+                        "instances": entry["instances"], "volume_mm3": round(part.local.Volume(), 3), "hash": h})
+    geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
+                          [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
+
+    # 3. Link meshes for the URDF, mass properties, URDF.
+    links = kinematics.links(params)
+    for i, link in enumerate(links):
+        link_parts = [p for p in parts if p.link == link]
+        key = digest([(p.name, hashes[p.design], _placement_key(p)) for p in link_parts])
+        target = out / "urdf" / "meshes" / f"{link}.stl"
+        fresh = cache.fresh(f"link:{link}", key, [target])
+        progress.step("meshes", i, len(links), link, "unchanged" if fresh else "fuse+mesh")
+        if not fresh:
+            write_stl(link_solid(link_parts), target)
+            cache.record(f"link:{link}", key)
+    props = massprops.link_props(params, parts)
+    (out / "urdf").mkdir(parents=True, exist_ok=True)
+    (out / "urdf" / "robogene_head.urdf").write_text(urdf.generate(params, props))
+    mass_report = mass_summary(params, props)
+    _write(out / "reports" / "mass.json", json.dumps(mass_report, indent=1))
+
+    # 4. Assembly STEP and GLB at the zero pose.
+    asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]
+    if not cache.fresh("assembly", geometry_key, asm_out):
+        progress.note("assembly STEP + GLB")
+        asm_out[0].parent.mkdir(parents=True, exist_ok=True)
+        cq_assy = assembly.to_cq()
+        cq_assy.export(str(asm_out[0]), "STEP")
+        cq_assy.export(str(asm_out[1]), "GLTF")
+        cache.record("assembly", geometry_key)
+
+    # 5. OpenSCAD printables.
+    scad_defines = openscad.defines(params)
+    scads = openscad.sources()
+    for i, scad in enumerate(scads):
+        values = scad_defines.get(scad.stem, {})
+        target = out / "stl" / f"{scad.stem}.stl"
+        key = digest(scad.read_bytes(), values)
+        fresh = cache.fresh(f"scad:{scad.stem}", key, [target])
+        progress.step("openscad", i, len(scads), scad.stem, "unchanged" if fresh else "render")
+        if not fresh:
+            openscad.render_stl(scad, values, target)
+            cache.record(f"scad:{scad.stem}", key)
+
+    # 6. Every mesh watertight and manifold.
+    stls = sorted((out / "stl").glob("*.stl")) + sorted((out / "urdf" / "meshes").glob("*.stl"))
+    mesh_results = []
+    for i, path in enumerate(stls):
+        progress.step("mesh-check", i, len(stls), path.name)
+        mesh_results.append(mesh.check_stl(path))
+    _write(out / "reports" / "meshes.json", json.dumps([dict(vars(m), ok=m.ok, defects=m.defects) for m in mesh_results], indent=1))
+    bad_meshes = [m for m in mesh_results if not m.ok]
+    if bad_meshes:
+        raise BuildError("mesh defects: " + "; ".join(
+            f"{Path(m.path).name}: {m.boundary_edges} open, {m.nonmanifold_edges} non-manifold, "
+            f"{m.misoriented_edges} misoriented edges, {m.degenerate_faces} degenerate faces, volume {m.volume:.1f}"
+            for m in bad_meshes))
+
+    # 7. Interference and clearance over the joint sweep (the slow step: cached on the geometry).
+    inter_out = [out / "reports" / "interference.txt", out / "reports" / "interference.json"]
+    if not cache.fresh("interference", geometry_key, inter_out):
+        poses = interference.sweep_poses(params)
+        report = interference.check(params, assembly, poses,
+                                    progress=lambda i, n: progress.step("sweep", i, n, f"pose {i + 1}"))
+        minimum = params.geometry("clearances").num("minimum")
+        _write(inter_out[0], interference.format_report(report, minimum) + "\n")
+        _write(inter_out[1], json.dumps(interference.report_json(report, minimum), indent=1))
+        if not report.ok:
+            raise BuildError("interference check failed, see " + str(inter_out[0]))
+        cache.record("interference", geometry_key)
+
+    # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
+    from . import freecad
+    step_files = sorted((out / "step").glob("*.step")) + [asm_out[0]]
+    expected = {d["design"]: d["volume_mm3"] for d in summary}
+    expected["robogene_head"] = round(sum(p.local.Volume() for p in parts), 3)
+    solids = {"robogene_head": len(parts)}
+    densities = params.root.node("materials")
+    machined = [d["design"] for d in summary if d["kind"] == "machined"]
+    materials = {d["design"]: (d["material"], densities.num(d["material"])) for d in summary if d["kind"] == "machined"}
+    fc_key = digest(geometry_key, sorted(expected.items()), machined, freecad.script_digest())
+    fc_out = [out / "reports" / "freecad-step-check.json"] + [out / "drawings" / f"{d}.svg" for d in machined]
+    if not cache.fresh("freecad", fc_key, fc_out):
+        progress.note(f"FreeCAD: re-open {len(step_files)} STEP files, draw {len(machined)} machined parts")
+        freecad.run(step_files, expected, machined, out, materials, solids)
+        cache.record("freecad", fc_key)
+    fc_report = json.loads(fc_out[0].read_text())
+    bad_steps = [r for r in fc_report["files"] if not r["ok"]]
+    if bad_steps:
+        raise BuildError("FreeCAD rejected: " + "; ".join(f"{r['file']}: {r['problem']}" for r in bad_steps))
+
+    # 9. Renders at a few joint poses.
+    render_out = [out / "renders" / f"{name}.png" for name, *_ in render.VIEWS]
+    face = out / "stl" / "face_plate.stl"
+    render_key = digest(geometry_key, render.VIEWS, hashlib.sha256(face.read_bytes()).hexdigest() if face.exists() else "",
+                        hashlib.sha256(Path(render.__file__).read_bytes()).hexdigest())
+    if not cache.fresh("renders", render_key, render_out):
+        for i, (name, pose, az, el) in enumerate(render.VIEWS):
+            progress.step("render", i, len(render.VIEWS), name)
+            render.render(assembly, pose, az, el, render_out[i], face_plate=face if face.exists() else None)
+        cache.record("renders", render_key)
+
+    # 10. Bill of materials.
+    sys.path.insert(0, str(REPO / "hardware" / "bom"))
+    from robogene_bom import build as bom_build
+    progress.note("BOM")
+    bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch)
+
+    # 11. Summary and manifest with checksums.
+    _write(out / "parts.json", json.dumps(summary, indent=1))
+    manifest = write_manifest(out, params_text)
+    progress.note(f"done: {len(manifest['files'])} files in {out}")
+    return manifest
+
+
+def mass_summary(params, props) -> dict:
+    head_links = ["head_frame", "eyes_tilt_link", "left_eye", "right_eye"]
+    poses = kinematics.link_poses(params, {})
+    head_frame = poses["head_frame"]
+    # The moving head (everything above the yaw joint) in the head frame, at the zero pose.
+    moved = [props[l].moved(np.linalg.inv(head_frame) @ poses[l]) for l in head_links if l in props]
+    head = massprops.combine(moved)
+    ref = params.root.node("reference")
+    ref_i = ref.node("head_inertia_kgmm2")
+    out = {"links": {}, "head_above_yaw": {}, "reference": {}}
+    for link, mp in props.items():
+        out["links"][link] = {"mass_kg": round(mp.mass, 5), "com_mm": [round(v, 3) for v in mp.com],
+                              "inertia_kgmm2": [[round(v, 3) for v in row] for row in mp.inertia]}
+    out["head_above_yaw"] = {"mass_kg": round(head.mass, 5), "com_mm": [round(v, 3) for v in head.com],
+                             "inertia_kgmm2": [[round(v, 3) for v in row] for row in head.inertia]}
+    out["reference"] = {"source": "iCub 2.7 standard head, public CAD export (see docs/fabricate.md)",
+                        "mass_kg": ref.num("head_mass"),
+                        "inertia_kgmm2_diag": [ref_i.num("xx"), ref_i.num("yy"), ref_i.num("zz")],
+                        "mass_ratio": round(head.mass / ref.num("head_mass"), 4),
+                        "inertia_ratio_diag": [round(head.inertia[k, k] / ref_i.num(a), 4)
+                                               for k, a in enumerate(("xx", "yy", "zz"))]}
+    return out
+
+
+def _write(path: Path, text: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+
+
+def write_manifest(out: Path, params_text: bytes) -> dict:
+    files = []
+    for path in sorted(out.rglob("*")):
+        rel = path.relative_to(out)
+        if path.is_dir() or rel.parts[0] == ".cache" or rel.name in ("manifest.json", "SHA256SUMS"):
+            continue
+        files.append({"path": str(rel), "bytes": path.stat().st_size,
+                      "sha256": hashlib.sha256(path.read_bytes()).hexdigest()})
+    manifest = {"package": "robogene-head fabrication package",
+                "parameters_sha256": hashlib.sha256(params_text).hexdigest(), "files": files}
+    _write(out / "manifest.json", json.dumps(manifest, indent=1))
+    _write(out / "SHA256SUMS", "".join(f"{f['sha256']}  {f['path']}\n" for f in files))
+    return manifest
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", type=Path, default=REPO / "build" / "fab")
+    ap.add_argument("--params", type=Path, default=None)
+    ap.add_argument("--board-bom", type=Path, action="append", default=[],
+                    help="CSV BOM of a KiCad board (Reference, Value, Footprint, MPN, Qty); repeatable")
+    ap.add_argument("--batch", type=int, default=None, help="number of heads for the batch cost (default: parameter file)")
+    args = ap.parse_args(argv)
+    progress = Progress()
+    started = time.monotonic()
+    try:
+        build(args.out, args.params, args.board_bom, args.batch, progress)
+    except (ParameterError, BuildError) as exc:
+        print(f"fab: error: {exc}", file=sys.stderr)
+        return 1
+    progress.note(f"fabrication package built in {time.monotonic() - started:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    sys.exit(main())

@@ -1,0 +1,53 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Small solid builders on top of CadQuery, so part modules read like a drawing."""
+from __future__ import annotations
+
+import cadquery as cq
+
+AXES = {"x": cq.Vector(1, 0, 0), "y": cq.Vector(0, 1, 0), "z": cq.Vector(0, 0, 1)}
+
+
+def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> cq.Solid:
+    """Axis-aligned box from its coordinate ranges."""
+    if not (x0 < x1 and y0 < y1 and z0 < z1):
+        raise ValueError(f"empty box {x0}..{x1} x {y0}..{y1} x {z0}..{z1}")
+    return cq.Solid.makeBox(x1 - x0, y1 - y0, z1 - z0, cq.Vector(x0, y0, z0))
+
+
+def cyl(axis: str, diameter: float, start: float, end: float, at: tuple[float, float] = (0.0, 0.0)) -> cq.Solid:
+    """Cylinder along a principal axis from coordinate `start` to `end`; `at` = the other two coordinates
+    in (y, z), (x, z) or (x, y) order."""
+    lo, hi = min(start, end), max(start, end)
+    a, b = at
+    base = {"x": (lo, a, b), "y": (a, lo, b), "z": (a, b, lo)}[axis]
+    return cq.Solid.makeCylinder(diameter / 2, hi - lo, cq.Vector(*base), AXES[axis])
+
+
+def tube(axis: str, outside: float, bore: float, start: float, end: float, at=(0.0, 0.0)) -> cq.Shape:
+    return cyl(axis, outside, start, end, at).cut(cyl(axis, bore, start - 1, end + 1, at))
+
+
+def sphere(radius: float, centre=(0.0, 0.0, 0.0)) -> cq.Solid:
+    return cq.Solid.makeSphere(radius, cq.Vector(*centre), angleDegrees1=-90, angleDegrees2=90)
+
+
+def union(*shapes: cq.Shape) -> cq.Shape:
+    result = shapes[0]
+    for s in shapes[1:]:
+        result = result.fuse(s)
+    return result.clean()
+
+
+def cut(shape: cq.Shape, *tools: cq.Shape) -> cq.Shape:
+    for t in tools:
+        shape = shape.cut(t)
+    return shape.clean()
+
+
+def single_solid(shape: cq.Shape, name: str) -> cq.Solid:
+    """Parts are one solid each; a boolean that split a part is a design error worth stopping for."""
+    solids = shape.Solids()
+    if len(solids) != 1:
+        raise ValueError(f"part {name}: expected one solid, got {len(solids)}")
+    return solids[0]

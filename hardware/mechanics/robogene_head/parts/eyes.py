@@ -1,0 +1,79 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Eye-tilt frame, eye cups with their camera mounts, eye-pan drives and the tilt pulley."""
+from __future__ import annotations
+
+from .. import geom
+from ..params import HeadParameters, ParameterError
+from . import mounts, purchased
+from .base import ALUMINIUM, PRINTED, Part, loc
+
+
+def eye_cup(params: HeadParameters):
+    """Printed eye cup about the eye centre: a sphere cut flat in front, with a pocket that holds the
+    camera board, a lens window, a slot for the camera's flat cable and the pan shaft bore below."""
+    e = params.geometry("eyes")
+    r, front = e.num("cup_radius", positive=True), e.num("cup_front_cut", positive=True)
+    cam = params.purchased(params.root.node("cameras").text("model"))
+    w, h, t = cam.num("board_width"), cam.num("board_height"), cam.num("thickness")
+    shaft = params.purchased(params.drive("left_eye_pan").text("gearhead")).num("shaft_diameter")
+    cup = geom.cut(geom.sphere(r), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1))
+    cup = geom.cut(cup,
+                   geom.box(-t, 0, -w / 2, w / 2, -h / 2, h / 2),                  # board pocket
+                   geom.cyl("x", cam.num("lens_diameter"), -0.5, front + 1),       # lens window
+                   geom.box(-r - 1, -t, -8, 8, -h / 2, -h / 2 + 2),               # flat-cable slot
+                   geom.cyl("z", shaft, -r - 1, -r + 3))                           # pan shaft bore
+    corner = ((w / 2) ** 2 + (h / 2) ** 2 + t ** 2) ** 0.5
+    if corner > r - 1:
+        raise ParameterError(f"{params.path}: geometry.eyes.cup_radius: {r} leaves under 1 mm of wall around the "
+                             f"camera board corners (they reach {corner:.1f} mm)")
+    return geom.single_solid(cup, "eye cup")
+
+
+def build(params: HeadParameters) -> list[Part]:
+    e = params.geometry("eyes")
+    tf = e.node("tilt_frame")
+    r, gap = e.num("cup_radius", positive=True), e.num("gap", positive=True)
+    pt, at = tf.num("plate_thickness", positive=True), tf.num("arm_thickness", positive=True)
+    ah, al_ = tf.num("arm_height", positive=True), tf.num("arm_length", positive=True)
+    half = params.baseline / 2
+    head = params.geometry("head")
+    inner = head.node("floor").num("half_width") - head.node("side_plate").num("thickness")
+    side_gap = params.geometry("clearances").num("minimum")
+    arm_out = inner - max(side_gap, 1.0)
+    arm_in = arm_out - at
+    if arm_in < half + r + gap:
+        raise ParameterError(f"{params.path}: geometry.head.floor.half_width: tilt frame arms at |y| >= {arm_in:.1f} "
+                             f"would touch the eye cups (they reach {half + r:.1f} + gap {gap})")
+    z_top = -r - gap
+    pan_gear = params.purchased(params.drive("left_eye_pan").text("gearhead"))
+    tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
+    hw = head.node("floor").num("half_width")
+    pw = params.geometry("pulleys").num("width")
+
+    frame = geom.union(
+        geom.box(-al_ / 2 - 4, al_ / 2 + 4, -arm_out, arm_out, z_top - pt, z_top),      # plate under the eyes
+        geom.box(-al_ / 2, al_ / 2, arm_in, arm_out, z_top - pt, ah),                  # arms up to the tilt axis
+        geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
+        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + 1 + pw),            # tilt shafts
+        geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
+    )
+    frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
+                              for s in (1, -1)])
+    parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
+                  material="aluminium-6082", color=ALUMINIUM)]
+    teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
+    bore = tilt_bearing.num("bore")
+    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
+                      mounts.pulley(params, teeth, bore), loc(0, hw + 1, 0, rx=-90),
+                      material="aluminium-6082", color=ALUMINIUM))
+    cup = eye_cup(params)
+    cam_key = params.root.node("cameras").text("model")
+    for side, sign in (("left", 1), ("right", -1)):
+        joint = f"{side}_eye_pan"
+        # The pan gearhead hangs under the tilt plate, output shaft up into the eye cup.
+        parts += purchased.drive_stack(params, joint, "eyes_tilt_link", loc(0, sign * half, z_top - pt, rx=180))
+        link = params.joints[joint].child
+        parts.append(Part(f"{side}_eye_cup", "eye_cup", link, "printed", cup, material="petg-printed", color=PRINTED))
+        parts.append(purchased.camera(params, f"{side}_camera", cam_key, link, loc()))
+    return parts

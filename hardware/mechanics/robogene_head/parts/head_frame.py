@@ -1,0 +1,77 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Head frame (floor, side plates, back plate, top bar) with the yaw and eye-tilt drives it carries."""
+from __future__ import annotations
+
+from .. import geom
+from ..params import HeadParameters
+from . import mounts, purchased
+from .base import ALUMINIUM, PRINTED, Part, loc
+
+
+def build(params: HeadParameters) -> list[Part]:
+    h = params.geometry("head")
+    fl, sp, bp, tb = h.node("floor"), h.node("side_plate"), h.node("back_plate"), h.node("top_bar")
+    x0, x1, hw, ft = fl.num("x_min"), fl.num("x_max"), fl.num("half_width", positive=True), fl.num("thickness", positive=True)
+    st, sx0, sx1, sh = sp.num("thickness", positive=True), sp.num("x_min"), sp.num("x_max"), sp.num("height", positive=True)
+    bt, bh = bp.num("thickness", positive=True), bp.num("height", positive=True)
+    inner = hw - st
+    tilt = params.joints["eyes_tilt"].origin
+    tx, tz = tilt[0], tilt[2]
+    ym = h.num("yaw_motor_x")
+    tm = h.node("tilt_motor")
+    tmx, tmz = tm.num("x"), tm.num("z")
+    yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
+    tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
+    al = dict(material="aluminium-6082", color=ALUMINIUM)
+
+    floor = geom.cut(geom.box(x0, x1, -hw, hw, -ft, 0),
+                     geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
+                     geom.cyl("z", 8, -ft - 1, 1, (ym, 0)))
+    # Left side plate in its design frame; the right plate is its mirror image.
+    side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
+                    geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
+                    geom.cyl("y", 8, inner - 1, hw + 1, (tmx, tmz)))
+    side = geom.single_solid(side, "side plate")
+    side_right = side.mirror("XZ")
+    back = geom.box(x0, x0 + bt, -inner, inner, 0, bh)
+    top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
+
+    parts = [
+        Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"), **al),
+        Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side, **al),
+        Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right, **al),
+        Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, **al),
+        Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, **al),
+        purchased.bearing(params, "neck_yaw_bearing", params.drive("neck_yaw").text("bearing"), "head_frame",
+                          loc(z=-ft)),
+        purchased.bearing(params, "eyes_tilt_bearing_left", params.drive("eyes_tilt").text("bearing"), "head_frame",
+                          loc(tx, inner, tz, rx=-90)),
+        purchased.bearing(params, "eyes_tilt_bearing_right", params.drive("eyes_tilt").text("bearing"), "head_frame",
+                          loc(tx, -inner, tz, rx=90)),
+        purchased.joint_encoder(params, "neck_yaw_joint_encoder", "head_frame", loc(0, 0, 1)),
+        purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame", loc(tx, -hw - 1, tz, rx=90)),
+    ]
+    # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
+    pw = params.geometry("pulleys").num("width")
+    yaw_gear = params.purchased(params.drive("neck_yaw").text("gearhead"))
+    parts.append(Part("neck_yaw_motor_mount", "motor_mount_neck_yaw", "head_frame", "machined",
+                      mounts.mount_plate(28, 28, 3, 8, yaw_gear.num("diameter")), loc(ym, 0, 0), **al))
+    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, 3))
+    yaw_teeth = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True))
+    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_gear.num('shaft_diameter'):g}", "head_frame",
+                      "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")), loc(ym, 0, -12), **al))
+    # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside, motor held by a clamp.
+    tilt_gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
+    tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))
+    parts += purchased.drive_stack(params, "eyes_tilt", "head_frame", loc(tmx, inner, tmz, rx=90))
+    tilt_teeth = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True))
+    parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_gear.num('shaft_diameter'):g}",
+                      "head_frame", "machined", mounts.pulley(params, tilt_teeth, tilt_gear.num("shaft_diameter")),
+                      loc(tmx, hw + 1, tmz, rx=-90), **al))
+    y_motor = inner - tilt_gear.num("length") - tilt_motor.num("length") / 2
+    clamp = geom.cut(geom.box(x0 + bt, tmx + 10, y_motor - 5, y_motor + 5, tmz - 12, tmz + 12),
+                     geom.cyl("y", tilt_motor.num("diameter"), y_motor - 6, y_motor + 6, (tmx, tmz)))
+    parts.append(Part("eyes_tilt_motor_clamp", "eyes_tilt_motor_clamp", "head_frame", "printed",
+                      geom.single_solid(clamp, "tilt motor clamp"), material="petg-printed", color=PRINTED))
+    return parts

@@ -1,0 +1,144 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Neck base (plates, uprights, board bay), pitch stage and roll stage, with their drives."""
+from __future__ import annotations
+
+from .. import geom
+from ..params import HeadParameters, ParameterError
+from . import mounts, purchased
+from .base import ALUMINIUM, Part, loc
+
+SCREW = "iso7380-M3x12"
+STANDOFF = "standoff-M3x36-FF"
+
+
+def _base(params: HeadParameters) -> list[Part]:
+    g = params.geometry("neck_base")
+    pl, fl, up = g.node("plate"), g.node("flange"), g.node("upright")
+    L, W, T = pl.num("length", positive=True), pl.num("width", positive=True), pl.num("thickness", positive=True)
+    bay, inset = g.num("bay_height", positive=True), g.num("corner_inset", positive=True)
+    ft = fl.num("thickness", positive=True)
+    ut, ul, gap = up.num("thickness", positive=True), up.num("length", positive=True), up.num("gap", positive=True)
+    hp = params.joints["neck_pitch"].origin[2]
+    corners = [(sx * (L / 2 - inset), sy * (W / 2 - inset)) for sx in (-1, 1) for sy in (-1, 1)]
+    y_up = gap / 2 + ut / 2
+    upright_screws = [(sx * ul / 4, sy * y_up) for sx in (-1, 1) for sy in (-1, 1)]
+
+    plate = geom.cut(geom.box(-L / 2, L / 2, -W / 2, W / 2, -T, 0),
+                     *[geom.cyl("z", 3.4, -T - 1, 1, c) for c in corners + upright_screws],
+                     geom.box(-L / 2 + 20, -L / 2 + 40, -12, 12, -T - 1, 1))  # board cable pass-through
+    flange = geom.cut(geom.box(-fl.num("length") / 2, fl.num("length") / 2, -fl.num("width") / 2, fl.num("width") / 2, 0, ft),
+                      *[geom.cyl("z", 3.4, -1, ft + 1, c) for c in corners],
+                      *[geom.cyl("z", 6.5, -1, ft + 1, (sx * 40, sy * 40)) for sx in (-1, 1) for sy in (-1, 1)])
+    z_flange = -T - bay - ft
+
+    bearing = params.purchased(params.drive("neck_pitch").text("bearing"))
+    bw, bo = bearing.num("width"), bearing.num("outside")
+    height = hp + bo / 2 + 5
+    # Left upright in its design frame; the right one is the same part turned half a turn about z.
+    upright = geom.cut(geom.box(-ul / 2, ul / 2, gap / 2, gap / 2 + ut, 0, height),
+                       geom.cyl("y", 8, gap / 2 - 1, gap / 2 + ut + 1, (0, hp)),
+                       geom.cyl("y", bo, gap / 2 + ut - bw, gap / 2 + ut + 1, (0, hp)),
+                       *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)])
+    upright = geom.single_solid(upright, "neck_upright")
+
+    parts = [
+        Part("neck_base_plate", "neck_base_plate", "neck_base", "machined", geom.single_solid(plate, "plate"),
+             material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_base_flange", "neck_base_flange", "neck_base", "machined", geom.single_solid(flange, "flange"),
+             loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_upright_right", "neck_upright", "neck_base", "machined", upright, loc(rz=180),
+             material="aluminium-6082", color=ALUMINIUM),
+    ]
+    for i, (x, y) in enumerate(corners):
+        parts.append(purchased.standoff(params, f"base_standoff_{i}", STANDOFF, "neck_base", loc(x, y, -T - bay)))
+        parts.append(purchased.screw(params, f"base_plate_screw_{i}", SCREW, "neck_base", loc(x, y, 0, rx=180)))
+        parts.append(purchased.screw(params, f"base_flange_screw_{i}", SCREW, "neck_base", loc(x, y, z_flange)))
+    for i, (x, y) in enumerate(upright_screws):
+        parts.append(purchased.screw(params, f"upright_screw_{i}", SCREW, "neck_base", loc(x, y, -T)))
+    # Pitch bearings sit in the uprights' outer recesses; the drive is bolted on the left upright.
+    y_out = gap / 2 + ut
+    parts.append(purchased.bearing(params, "neck_pitch_bearing_left", params.drive("neck_pitch").text("bearing"), "neck_base",
+                                   loc(0, y_out - bw, hp, rx=-90)))
+    parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"), "neck_base",
+                                   loc(0, -y_out + bw, hp, rx=90)))
+    gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
+    mount = mounts.mount_plate(40, 36, 4, 8, gear.num("diameter"))
+    parts.append(Part("neck_pitch_motor_mount", "motor_mount_neck_pitch", "neck_base", "machined", mount,
+                      loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM))
+    parts += purchased.drive_stack(params, "neck_pitch", "neck_base", loc(0, y_out + 4, hp, rx=-90))
+    parts.append(purchased.joint_encoder(params, "neck_pitch_joint_encoder", "neck_base", loc(0, -y_out - 1, hp, rx=90)))
+    return parts
+
+
+def _pitch_stage(params: HeadParameters) -> list[Part]:
+    """Pitch stage in the neck_pitch_link frame (origin on the pitch axis)."""
+    g = params.geometry("neck_pitch_stage")
+    b, lug = g.node("body"), g.node("lug")
+    bl, bw, bh = b.num("length", positive=True), b.num("width", positive=True), b.num("height", positive=True)
+    lt, lw, span = lug.num("thickness", positive=True), lug.num("width", positive=True), lug.num("span", positive=True)
+    up = params.geometry("neck_base", "upright")
+    y_out = up.num("gap") / 2 + up.num("thickness")
+    zr = params.joints["neck_roll"].origin[2]
+    gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
+    bearing = params.purchased(params.drive("neck_roll").text("bearing"))
+    x_out = span / 2 + lt
+    stage = geom.union(
+        geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
+        geom.box(-x_out, x_out, -lw / 2, lw / 2, bh / 2 - 4, bh / 2),
+        geom.box(span / 2, x_out, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
+        geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
+        geom.cyl("y", 6, bw / 2 - 1, y_out),          # pitch shafts, integral with the stage
+        geom.cyl("y", 6, -y_out, -bw / 2 + 1),
+    )
+    stage = geom.cut(stage,
+                     geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + 4, y_out + 1),
+                     geom.cyl("x", bearing.num("outside"), span / 2 - 1, x_out + 1, (0, zr)),
+                     geom.cyl("x", bearing.num("outside"), -x_out - 1, -span / 2 + 1, (0, zr)))
+    parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
+                  material="aluminium-6082", color=ALUMINIUM)]
+    key = params.drive("neck_roll").text("bearing")
+    parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(span / 2, 0, zr, ry=90)))
+    parts.append(purchased.bearing(params, "neck_roll_bearing_rear", key, "neck_pitch_link", loc(-span / 2, 0, zr, ry=-90)))
+    roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
+    parts.append(Part("neck_roll_motor_mount", "motor_mount_neck_roll", "neck_pitch_link", "machined",
+                      mounts.mount_plate(lw, lw, 4, 8, roll_gear.num("diameter")), loc(-x_out, 0, zr, ry=-90),
+                      material="aluminium-6082", color=ALUMINIUM))
+    parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - 4, 0, zr, ry=-90))
+    parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(x_out + 1, 0, zr, ry=90)))
+    return parts
+
+
+def _roll_stage(params: HeadParameters) -> list[Part]:
+    """Roll stage in the neck_roll_link frame (origin on the roll axis), carrying the fixed yaw shaft and pulley."""
+    b = params.geometry("neck_roll_stage", "body")
+    bl, bw, bh = b.num("length", positive=True), b.num("width", positive=True), b.num("height", positive=True)
+    lug = params.geometry("neck_pitch_stage", "lug")
+    x_out = lug.num("span") / 2 + lug.num("thickness")
+    zy = params.joints["neck_yaw"].origin[2]
+    gear = params.purchased(params.drive("neck_roll").text("gearhead"))
+    yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
+    shaft = yaw_bearing.num("bore")
+    stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
+                       geom.cyl("x", 6, bl / 2 - 1, x_out), geom.cyl("x", 6, -x_out, -bl / 2 + 1),
+                       geom.cyl("z", shaft, bh / 2 - 1, zy))
+    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, -x_out + gear.num("shaft_length") - 4))
+    pw = params.geometry("pulleys").num("width")
+    teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
+    return [
+        Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
+             material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
+             mounts.pulley(params, teeth, shaft), loc(z=zy - 12), material="aluminium-6082", color=ALUMINIUM),
+    ]
+
+
+def build(params: HeadParameters) -> list[Part]:
+    # The yaw pulleys (head frame z -12..-6) hang between the roll stage and the head floor.
+    zy = params.joints["neck_yaw"].origin[2]
+    top = params.geometry("neck_roll_stage", "body").num("height") / 2
+    if zy - 12 - top < params.geometry("clearances").num("minimum"):
+        raise ParameterError(f"{params.path}: joints.neck_yaw.origin[2]: {zy} leaves no room for the yaw pulleys "
+                             f"above the roll stage (top at {top})")
+    return _base(params) + _pitch_stage(params) + _roll_stage(params)

@@ -1,0 +1,81 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Simplified envelopes of purchased parts, sized from the datasheet numbers in the parameter file.
+
+Every envelope is built along +z from z = 0 in its design frame; the caller places it with a Location."""
+from __future__ import annotations
+
+import math
+
+import cadquery as cq
+
+from .. import geom
+from ..params import HeadParameters
+from .base import DARK, GREEN, STEEL, Part, loc
+
+
+def _purchased(params: HeadParameters, name: str, key: str, link: str, shape: cq.Shape, placement: cq.Location,
+               color) -> Part:
+    return Part(name, key, link, "purchased", shape, placement, mass=params.purchased(key).num("mass"), color=color)
+
+
+def gearhead_shape(p) -> cq.Shape:
+    """Body z 0..length, output shaft z -shaft_length..0 (the flange face is z = 0)."""
+    return geom.union(geom.cyl("z", p.num("diameter"), 0, p.num("length")),
+                      geom.cyl("z", p.num("shaft_diameter"), -p.num("shaft_length"), 0))
+
+
+def drive_stack(params: HeadParameters, joint: str, link: str, placement: cq.Location) -> list[Part]:
+    """Gearhead + motor + encoder of a joint's drive. In the stack frame the gearhead flange face is at z = 0,
+    the output shaft points to -z and the motor and encoder follow along +z."""
+    drive = params.drive(joint)
+    gear, motor, enc = (params.purchased(drive.text(k)) for k in ("gearhead", "motor", "encoder"))
+    z_motor = gear.num("length")
+    z_enc = z_motor + motor.num("length")
+    return [
+        _purchased(params, f"{joint}_gearhead", drive.text("gearhead"), link, gearhead_shape(gear), placement, DARK),
+        _purchased(params, f"{joint}_motor", drive.text("motor"), link,
+                   geom.cyl("z", motor.num("diameter"), 0, motor.num("length")), placement * loc(z=z_motor), STEEL),
+        _purchased(params, f"{joint}_encoder", drive.text("encoder"), link,
+                   geom.cyl("z", enc.num("diameter"), 0, enc.num("length")), placement * loc(z=z_enc), DARK),
+    ]
+
+
+def bearing(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Ring z 0..width."""
+    b = params.purchased(key)
+    shape = geom.tube("z", b.num("outside"), b.num("bore"), 0, b.num("width"))
+    return _purchased(params, name, key, link, shape, placement, STEEL)
+
+
+def joint_encoder(params: HeadParameters, name: str, link: str, placement: cq.Location, key="ams-AS5048A") -> Part:
+    """Sensor board, centred on its axis, z 0..height (the magnet faces z = 0)."""
+    e = params.purchased(key)
+    l, w, h = e.num("length"), e.num("width"), e.num("height")
+    return _purchased(params, name, key, link, geom.box(-w / 2, w / 2, -l / 2, l / 2, 0, h), placement, GREEN)
+
+
+def camera(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Board in x = -thickness..0 facing +x, lens z-centred on the board, x 0..lens_length."""
+    c = params.purchased(key)
+    w, h, t = c.num("board_width"), c.num("board_height"), c.num("thickness")
+    shape = geom.union(geom.box(-t, 0, -w / 2, w / 2, -h / 2, h / 2),
+                       geom.cyl("x", c.num("lens_diameter"), 0, c.num("lens_length")))
+    return _purchased(params, name, key, link, shape, placement, GREEN)
+
+
+def screw(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Button head z -head_height..0, shank z 0..length (the head seats on z = 0)."""
+    s = params.purchased(key)
+    shape = geom.union(geom.cyl("z", s.num("head_diameter"), -s.num("head_height"), 0),
+                       geom.cyl("z", s.num("diameter"), 0, s.num("length")))
+    return _purchased(params, name, key, link, shape, placement, DARK)
+
+
+def standoff(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Hex prism z 0..length with a thread-size bore (the mating screws fill it)."""
+    s = params.purchased(key)
+    corner = s.num("across_flats") / math.cos(math.radians(30))
+    hexagon = cq.Workplane("XY").polygon(6, corner).extrude(s.num("length")).val()
+    shape = hexagon.cut(geom.cyl("z", s.num("thread"), -1, s.num("length") + 1))
+    return _purchased(params, name, key, link, geom.single_solid(shape, name), placement, STEEL)

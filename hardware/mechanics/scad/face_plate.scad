@@ -1,0 +1,30 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: CERN-OHL-S-2.0
+//
+// Face plate: the printed face screwed to the front edges of the head's side plates, with openings the
+// eyes look through over their whole pan and tilt range. The most remixed part of a head: make it yours.
+// Modelled lying flat (print orientation); on the head its x is the head's y and its y the head's z.
+
+width = 132;          // across the head = 2 * floor half_width
+height = 112;         // side plate height
+thickness = 3;
+eye_y = 82;           // eye height above the head floor
+baseline = 68;
+eye_w = 46;           // opening width, covers the pan range at the plate's distance from the eyes
+eye_h = 36;           // opening height, covers the tilt range
+edge_inset = 3;       // screw holes on the side plates' 6 mm front edges
+screw_d = 3.4;
+corner_r = 10;
+$fn = 64;
+
+module rounded_rect(w, h, r) {
+    offset(r = r) offset(delta = -r) square([w, h], center = true);
+}
+
+linear_extrude(height = thickness) difference() {
+    translate([0, height / 2]) rounded_rect(width, height, corner_r);
+    for (s = [-1, 1]) translate([s * baseline / 2, eye_y]) scale([eye_w / eye_h, 1]) circle(d = eye_h);
+    // mouth grille: ventilation for the motors
+    for (k = [-3 : 3]) translate([k * 9, 28]) rounded_rect(5, 16, 2.4);
+    for (sx = [-1, 1], yy = [20, 92]) translate([sx * (width / 2 - edge_inset), yy]) circle(d = screw_d);
+}

@@ -1,0 +1,37 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+#
+# Head mechanics, BOM and fabrication package (hardware/mechanics, hardware/bom -> build/fab).
+# `make fab` builds the package; inside it every output is keyed by a content hash, so only what changed is
+# rebuilt. BOARD_BOMS: CSV BOMs of the KiCad boards (Reference, Value, Footprint, MPN, Qty) merged into the BOM.
+
+FAB        := $(BUILD)/fab
+HW_PY      := PYTHONPATH=$(ROOT)/hardware/mechanics:$(ROOT)/hardware/bom $(PY)
+BOARD_BOMS ?= $(sort $(wildcard $(FAB)/boards/*-bom.csv))
+HW_SOURCES := hardware/head-parameters.yaml $(shell find hardware/mechanics hardware/bom -type f \
+                \( -name '*.py' -o -name '*.yaml' -o -name '*.scad' \) 2>/dev/null)
+
+# Debian packages. Once KiCad 9 has come from bookworm-backports, libhwloc15 is a backports version and
+# FreeCAD's libhwloc-plugins must come from there too, or apt refuses to resolve.
+$(STAMPS)/apt-hardware: tools/setup/apt/hardware.txt tools/setup/apt-install.sh | $(STAMPS)
+	extra=(); \
+	if dpkg-query -W -f='$${Version}' libhwloc15 2>/dev/null | grep -q bpo; then \
+	  extra=(-- libhwloc-plugins/bookworm-backports); fi; \
+	tools/setup/apt-install.sh $< "$${extra[@]}"
+	touch $@
+
+$(STAMPS)/py-hardware: tools/setup/requirements-hardware.txt $(VENV)/.stamp | $(STAMPS)
+	$(PY) -m pip install -q --disable-pip-version-check -r $<
+	touch $@
+
+$(FAB)/manifest.json: $(HW_SOURCES) $(BOARD_BOMS) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
+	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b))
+
+.PHONY: fab test-hardware
+fab: $(FAB)/manifest.json
+
+test-hardware: $(FAB)/manifest.json
+	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider tests/hardware
+
+HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders)" \
+              "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests"
