@@ -11,7 +11,7 @@ Target parse_target(std::string_view text) {
   auto mark = text.find(":/");
   if (mark != std::string_view::npos && mark > 0 && text.substr(0, mark).find('/') == std::string_view::npos) {
     t.carrier = std::string(text.substr(0, mark));
-    t.name = std::string(text.substr(mark + 1));
+    t.name = std::string(text.substr(mark + 2));
   } else {
     t.name = std::string(text);
   }
