@@ -1,0 +1,109 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Starting the command-line tools of both implementations on a private network.
+
+YARP's tools log to stderr (`Receiving input from /w to /r using tcp`, ...); our CLI's log format is
+not a contract, so readiness of our side is always observed from outside: name-server queries, the
+YARP peer's own log, or admin `[list] [out]`."""
+from __future__ import annotations
+
+import subprocess
+from pathlib import Path
+from typing import Sequence
+
+import interop_net as net_
+from interop_peer import PrivateNetwork, robogene_bin, yarp_python, yarp_tool
+from interop_procs import Proc, ProcessGroup, run
+
+START_TIMEOUT = 15.0
+HERE = Path(__file__).resolve().parent
+
+
+class YarpTools:
+    def __init__(self, procs: ProcessGroup, net: PrivateNetwork):
+        self.procs, self.net = procs, net
+
+    def server(self) -> Proc:
+        proc = self.procs.start("yarpserver", [
+            yarp_tool("yarpserver"), "--ip", "127.0.0.1", "--socket", str(self.net.ns_port), "--read",
+            "--portdb", ":memory:", "--subdb", ":memory:"], self.net.env, cwd=str(self.net.base))
+        net_.wait_registered(self.net.ns_port, "/root", START_TIMEOUT)
+        return proc
+
+    def read(self, port: str, *extra: str) -> Proc:
+        proc = self.procs.start(f"yarp read {port}", [yarp_tool("yarp"), "read", port, *extra], self.net.env)
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        return proc
+
+    def write(self, port: str, *targets: str) -> Proc:
+        proc = self.procs.start(f"yarp write {port}", [yarp_tool("yarp"), "write", port, *targets], self.net.env)
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        for target in targets:
+            proc.wait_output(rf"Sending output from {port} to {target} using", START_TIMEOUT, "stderr")
+        return proc
+
+    def rpc(self, target: str) -> Proc:
+        return self.procs.start(f"yarp rpc {target}", [yarp_tool("yarp"), "rpc", target], self.net.env)
+
+    def python(self, name: str, script: str, *args: str) -> Proc:
+        """A script of tests/interop run by the peer's interpreter (with the SWIG `yarp` module)."""
+        return self.procs.start(name, [yarp_python(), str(HERE / script), *args], self.net.env)
+
+    def echo_server(self, port: str) -> Proc:
+        proc = self.python(f"yarp echo {port}", "yarp_echo_server.py", port)
+        proc.wait_output(r"^ready$", START_TIMEOUT, "stdout")
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        return proc
+
+    def fake_motors(self, name: str = "/motors", joints: int = 4) -> Proc:
+        """yarpdev serving fakeMotionControl through controlboardwrapper2 (the 3.5 network wrapper)."""
+        proc = self.dev("--device", "controlboardwrapper2", "--subdevice", "fakeMotionControl",
+                        "--name", name, "--GENERAL::Joints", str(joints))
+        net_.wait_registered(self.net.ns_port, f"{name}/rpc:i", 30)
+        return proc
+
+    def dev(self, *args: str) -> Proc:
+        return self.procs.start("yarpdev", [yarp_tool("yarpdev"), *args], self.net.env)
+
+    def cmd(self, *args: str, timeout: float = 20.0, stdin: str = "") -> subprocess.CompletedProcess:
+        return run([yarp_tool("yarp"), *args], self.net.env, timeout, stdin)
+
+
+class RobogeneTools:
+    def __init__(self, procs: ProcessGroup, net: PrivateNetwork):
+        self.procs, self.net = procs, net
+        self.bin = robogene_bin()
+
+    def server(self) -> Proc:
+        proc = self.procs.start("robogene server", [
+            self.bin, "server", "--ip", "127.0.0.1", "--socket", str(self.net.ns_port), "--db", ":memory:"],
+            self.net.env)
+        net_.wait_registered(self.net.ns_port, "/root", START_TIMEOUT)
+        return proc
+
+    def read(self, port: str, *sources: str) -> Proc:
+        proc = self.procs.start(f"robogene read {port}", [self.bin, "read", port, *sources], self.net.env)
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        return proc
+
+    def write(self, port: str, *targets: str) -> Proc:
+        proc = self.procs.start(f"robogene write {port}", [self.bin, "write", port, *targets], self.net.env)
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        return proc
+
+    def rpc(self, target: str, *extra: str) -> Proc:
+        return self.procs.start(f"robogene rpc {target}", [self.bin, "rpc", target, *extra], self.net.env)
+
+    def cmd(self, *args: str, timeout: float = 20.0, stdin: str = "") -> subprocess.CompletedProcess:
+        return run([self.bin, *args], self.net.env, timeout, stdin)
+
+
+def lines(completed: subprocess.CompletedProcess) -> list[str]:
+    return [l.rstrip("\r") for l in completed.stdout.decode("utf-8", "backslashreplace").splitlines()]
+
+
+def expect_ok(completed: subprocess.CompletedProcess, what: Sequence[str] | str = "") -> subprocess.CompletedProcess:
+    assert completed.returncode == 0, (
+        f"{' '.join(map(str, completed.args))} exited {completed.returncode}\n"
+        f"stdout: {completed.stdout!r}\nstderr: {completed.stderr!r}")
+    return completed
