@@ -12,6 +12,7 @@
 
 #include "robogene/net/tcp_listener.hpp"
 #include "robogene/net/tcp_stream.hpp"
+#include "robogene/error.hpp"
 
 namespace robogene::test {
 
