@@ -9,7 +9,8 @@
 #include <cstdlib>
 #include <thread>
 
-#include "yarp_conf.hpp"
+#include "robogene/error.hpp"
+#include "robogene/name_config.hpp"
 
 namespace robogene::cli {
 
@@ -69,23 +70,19 @@ double parse_seconds(const std::string& text, const std::string& what) {
 }
 
 net::Endpoint parse_host_port(const std::string& text, const std::string& what) {
-  auto colon = text.rfind(':');
-  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) {
-    throw UsageError(what + " expects HOST:PORT (for example 127.0.0.1:10000), got \"" + text + "\"");
+  try {
+    return NameConfig::parse_server(text);
+  } catch (const Error& e) {
+    throw UsageError(what + " expects HOST:PORT (for example 127.0.0.1:10000): " + e.what());
   }
-  net::Endpoint e;
-  e.host = text.substr(0, colon);
-  e.port = static_cast<int>(parse_number(text.substr(colon + 1), what + " port", 1, 65535));
-  return e;
 }
 
 net::Endpoint name_server_address(Args& args) {
   if (auto s = args.option("--server")) return parse_host_port(*s, "--server");
-  if (auto conf = read_yarp_conf()) return *conf;
-  return net::Endpoint{"127.0.0.1", 10000};
+  return NameConfig::load().server;
 }
 
-std::string config_dir() { return yarp_config_dir(); }
+std::string config_dir() { return NameConfig::config_dir(); }
 
 void block_shutdown_signals() {
   sigset_t set;

@@ -5,15 +5,38 @@
 #include <cstdio>
 
 #include "commands.hpp"
-#include "name_request.hpp"
+#include "yarp_conf.hpp"
 #include "robogene/error.hpp"
+#include "robogene/name_client.hpp"
 
 namespace robogene::cli {
 namespace {
 
-void print_lines(const NameServerReply& r, bool with_end) {
+struct NameServerReply {
+  std::vector<std::string> lines;  // "*** end of message" and error lines excluded
+  std::string error;               // text of a "*** error: ..." line, if any
+};
+
+NameServerReply name_request(const net::Endpoint& server, const std::string& request) {
+  NameServerReply reply;
+  try {
+    for (auto& line : NameClient(server).request("NAME_SERVER " + request + "\n")) {
+      if (line.rfind("*** error: ", 0) == 0) {
+        reply.error = line.substr(11);
+      } else {
+        reply.lines.push_back(std::move(line));
+      }
+    }
+  } catch (const NetworkError& e) {
+    throw NetworkError(std::string(e.what()) + " (is `robogene server` running? --server HOST:PORT or " +
+                       yarp_conf_path() + " says where it is)");
+  }
+  return reply;
+}
+
+void print_lines(const NameServerReply& r) {
   for (const auto& line : r.lines) std::printf("%s\n", line.c_str());
-  if (with_end && r.ended) std::printf("*** end of message\n");
+  std::printf("*** end of message\n");
 }
 
 // Fails with the server's own explanation when it sent one.
@@ -85,7 +108,7 @@ int cmd_name(Args& args) {
     if (sub == "route") need(w, 3, "route /from /to");
     NameServerReply r = name_request(server, join(w, 0));
     check_error(r);
-    print_lines(r, true);
+    print_lines(r);
     return 0;
   }
   throw UsageError("unknown name sub-command \"" + sub +

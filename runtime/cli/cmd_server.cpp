@@ -22,7 +22,7 @@ namespace robogene::cli {
 int cmd_server(Args& args) {
   std::string ip = args.option("--ip").value_or("127.0.0.1");
   int port = static_cast<int>(parse_number(args.option("--socket").value_or("10000"), "--socket", 0, 65535));
-  std::string db_path = args.option("--db").value_or(yarp_config_dir() + "/robogene-names.db");
+  std::string db_path = args.option("--db").value_or(config_dir() + "/robogene-names.db");
   name::NameServiceConfig config;
   if (auto g = args.option("--stale-grace")) config.stale_grace_seconds = parse_seconds(*g, "--stale-grace");
   if (auto r = args.option("--recheck")) config.recheck_seconds = parse_seconds(*r, "--recheck");

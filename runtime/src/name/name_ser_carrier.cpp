@@ -15,7 +15,7 @@ namespace {
 constexpr char kHeader[] = "NAME_SER";
 const std::string kCarrierName = "name_ser";
 
-// Acceptor side: each line is one request ("NAME_SERVER ..." once the header is put back).
+// Acceptor side: one line, one request ("NAME_SERVER ..." once the header is put back).
 class NameSerInbound final : public carrier::InboundConnection {
  public:
   NameSerInbound(std::unique_ptr<carrier::Link> link, std::size_t max_line)
@@ -36,10 +36,9 @@ class NameSerInbound final : public carrier::InboundConnection {
                                 " does not start with \"NAME_SERVER \": \"" + line.substr(0, 40) + "\"");
       }
     } else {
-      do {
-        if (!link_->reader.wait_for_data()) return false;
-        line = link_->reader.read_line(max_line_);
-      } while (line.empty());
+      // One request per connection, as YARP's clients send: closing after the reply tells a
+      // client that reads until EOF (replies such as "[ok]" have no end marker) that we are done.
+      return false;
     }
     m.key = 'd';
     m.command = "d";
