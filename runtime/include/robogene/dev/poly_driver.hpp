@@ -1,0 +1,53 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// PolyDriver: owns one device created by the factory and hands out its interfaces (paper
+// section 3.2). view() is a dynamic_cast of the device to the requested interface, so it yields
+// nullptr when the device does not implement it.
+//
+//   PolyDriver device;
+//   device.open("test_motor");
+//   IPositionControl* ipos = nullptr;
+//   device.view(ipos);
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "robogene/dev/device_driver.hpp"
+#include "robogene/dev/driver_factory.hpp"
+
+namespace robogene::dev {
+
+class PolyDriver {
+ public:
+  PolyDriver() = default;
+  explicit PolyDriver(const Searchable& config) { open(config); }
+  ~PolyDriver() { close(); }
+  PolyDriver(const PolyDriver&) = delete;
+  PolyDriver& operator=(const PolyDriver&) = delete;
+
+  // Opens the driver named `device` with default parameters.
+  bool open(const std::string& device);
+  // Opens the driver named by the `device` key, passing it the whole configuration.
+  bool open(const Searchable& config);
+  // Closes the device (if open) and forgets it; views obtained earlier become dangling.
+  bool close();
+  bool is_valid() const { return device_ != nullptr; }
+  // Why the last open() failed ("" after a success).
+  const std::string& last_error() const { return error_; }
+
+  template <class Interface>
+  bool view(Interface*& out) const {
+    out = device_ ? dynamic_cast<Interface*>(device_.get()) : nullptr;
+    return out != nullptr;
+  }
+
+ private:
+  bool open_with(const std::string& name, const Searchable& config);
+
+  std::unique_ptr<DeviceDriver> device_;
+  std::string error_;
+};
+
+}  // namespace robogene::dev
