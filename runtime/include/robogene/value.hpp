@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -115,5 +116,16 @@ class Value {
     Bottle* l_;                      // List
   };
 };
+
+// Moving and destroying are on every hot path (decoding, vectors of values); inline, the scalar
+// case costs a few instructions and no call.
+inline Value::Value(Value&& other) noexcept : type_(other.type_) {
+  std::memcpy(static_cast<void*>(&i_), static_cast<const void*>(&other.i_), sizeof(i_));
+  other.type_ = Type::Null;
+}
+
+inline Value::~Value() {
+  if (type_ == Type::String || type_ == Type::Blob || type_ == Type::List) destroy();
+}
 
 }  // namespace robogene

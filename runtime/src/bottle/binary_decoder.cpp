@@ -100,6 +100,7 @@ class Reader {
     }
     Bottle b;
     b.reserve(count);
+    if (fixed_size_items(b, sub, count)) return b;
     for (std::uint32_t i = 0; i < count; ++i) {
       std::int32_t tag = sub;
       std::size_t tag_at = offset();
@@ -144,6 +145,29 @@ class Reader {
   }
 
  private:
+  // Homogeneous lists of fixed-size numbers (vectors of joint values, control modes) in one tight
+  // loop: the count check above already proved that all `count` items are present.
+  template <typename T, typename Make>
+  void read_all(Bottle& b, std::uint32_t count, Make make) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      b.add(make(load_le<T>(p_)));
+      p_ += sizeof(T);
+    }
+  }
+
+  bool fixed_size_items(Bottle& b, std::int32_t sub, std::uint32_t count) {
+    switch (sub) {
+      case kTagFloat64: read_all<double>(b, count, Value::float64); return true;
+      case kTagInt32: read_all<std::int32_t>(b, count, [](std::int32_t v) { return Value::int32(v); }); return true;
+      case kTagVocab: read_all<std::int32_t>(b, count, [](std::int32_t v) { return Value::vocab(v); }); return true;
+      case kTagInt64: read_all<std::int64_t>(b, count, Value::int64); return true;
+      case kTagFloat32: read_all<float>(b, count, Value::float32); return true;
+      case kTagInt16: read_all<std::int16_t>(b, count, Value::int16); return true;
+      case kTagInt8: read_all<std::int8_t>(b, count, Value::int8); return true;
+      default: return false;  // strings, blobs and tagged items are checked one by one
+    }
+  }
+
   std::size_t sized_block(const char* what) {
     const std::size_t at = offset();
     const std::uint32_t n = read_length();

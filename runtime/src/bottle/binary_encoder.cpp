@@ -118,6 +118,15 @@ std::int32_t item_tag(const Value& v) {
 
 void write_body(ChunkWriter& w, const Bottle& b, std::int32_t sub) {
   w.put(checked_length(b.size(), "item count"));
+  // Vectors of joint values are the common stream: one tight loop, no per-item dispatch.
+  if (sub == kTagFloat64) {
+    for (const Value& v : b) w.put(v.as_float64());
+    return;
+  }
+  if (sub == kTagInt32) {
+    for (const Value& v : b) w.put(v.as_int32());
+    return;
+  }
   for (const Value& v : b) {
     if (sub == 0) w.put(item_tag(v));
     write_payload(w, v);
@@ -127,6 +136,8 @@ void write_body(ChunkWriter& w, const Bottle& b, std::int32_t sub) {
 std::size_t payload_size(const Value& v);
 
 std::size_t body_size(const Bottle& b, std::int32_t sub) {
+  if (sub == kTagFloat64 || sub == kTagInt64) return 4 + 8 * b.size();
+  if (sub == kTagInt32 || sub == kTagVocab || sub == kTagFloat32) return 4 + 4 * b.size();
   std::size_t n = 4 + (sub == 0 ? 4 * b.size() : 0);
   for (const Value& v : b) n += payload_size(v);
   return n;

@@ -113,7 +113,6 @@ Value Value::blob(const void* data, std::size_t size) {
 Value Value::list(Bottle items) { return Value(std::move(items)); }
 
 Value::Value(const Value& other) : type_(Type::Null), i_(0) { copy_from(other); }
-Value::Value(Value&& other) noexcept : type_(Type::Null), i_(0) { move_from(std::move(other)); }
 
 Value& Value::operator=(const Value& other) {
   if (this != &other) {
@@ -133,7 +132,6 @@ Value& Value::operator=(Value&& other) noexcept {
   return *this;
 }
 
-Value::~Value() { destroy(); }
 
 void Value::destroy() noexcept {
   switch (type_) {
