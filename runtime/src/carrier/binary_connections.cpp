@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "binary_framing.hpp"
+#include "payload_reader.hpp"
 #include "robogene/carrier/bottle_framer.hpp"
 #include "robogene/error.hpp"
 
@@ -41,7 +42,8 @@ bool BinaryInbound::read(InboundMessage& m) {
   std::uint8_t first8[8];
   r.read_exact(first8, 8);
   read_message_after_first8(
-      first8, [&](void* p, std::size_t n) { r.read_exact(p, n); }, m, max_message_size_,
+      first8, [&](void* p, std::size_t n) { r.read_exact(p, n); },
+      [&](std::size_t n, InboundMessage& mm) { read_payload(r, n, mm); }, m, max_message_size_,
       remote_ + " (" + peer_text() + ")");
   reply_expected_ = m.reply_expected;
   return true;
@@ -95,7 +97,8 @@ void BinaryOutbound::set_timeout(net::Millis t) {
   link_->stream.set_write_timeout(t);
 }
 
-void BinaryOutbound::send(const OutboundMessage& m, Bottle* reply) {
+void BinaryOutbound::write_message(const OutboundMessage& m) {
+  last_key_ = m.key;
   if (m.bottle) {
     payload_.encode(*m.bottle);
     frame_message(m, &payload_, head_, iov_);
@@ -104,8 +107,11 @@ void BinaryOutbound::send(const OutboundMessage& m, Bottle* reply) {
   }
   link_->stream.writev_all(iov_.data(), iov_.size());
   if (m.bottle) payload_.clear();  // drop references into the caller's blobs
+}
 
-  bool reply_comes = m.key == 'd' || m.key == 'a';
+void BinaryOutbound::await_completion(Bottle* reply) {
+  bool reply_comes = last_key_ == 'd' || last_key_ == 'a';
+  last_key_ = 0;
   std::uint8_t first8[8];
   if (reply_comes) {
     link_->reader.read_exact(first8, 8);

@@ -51,12 +51,14 @@ class BinaryOutbound final : public OutboundConnection {
   bool is_text() const override { return false; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
 
-  void send(const OutboundMessage& m, Bottle* reply) override;
+  void write_message(const OutboundMessage& m) override;
+  void await_completion(Bottle* reply) override;
   void set_timeout(net::Millis t) override;
   void close() noexcept override;
 
  private:
   void expect_ack(const std::uint8_t* first8);
+  char last_key_ = 0;
 
   std::unique_ptr<Link> link_;
   std::string carrier_;

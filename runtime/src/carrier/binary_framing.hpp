@@ -24,10 +24,12 @@ void frame_message(const OutboundMessage& m, const EncodedPayload* payload,
                    std::vector<std::uint8_t>& head, std::vector<iovec>& iov);
 
 // Reads the rest of a message whose first 8 bytes (`first8`) were read already, from any
-// source that can read exact byte counts. Throws ParseError / NetworkError naming `peer`.
-template <typename ReadExact>
+// source that can read exact byte counts; `read_payload(n, m)` fills m's payload with the last
+// n bytes. Throws ParseError / NetworkError naming `peer`.
+template <typename ReadExact, typename ReadPayload>
 void read_message_after_first8(const std::uint8_t* first8, ReadExact&& read_exact,
-                               InboundMessage& m, std::size_t max_size, const std::string& peer);
+                               ReadPayload&& read_payload, InboundMessage& m, std::size_t max_size,
+                               const std::string& peer);
 
 // Ack `YA 00 00 00 00 RP`.
 extern const std::uint8_t kAck[8];

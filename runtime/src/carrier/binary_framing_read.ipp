@@ -9,9 +9,10 @@
 
 namespace robogene::carrier::detail {
 
-template <typename ReadExact>
+template <typename ReadExact, typename ReadPayload>
 void read_message_after_first8(const std::uint8_t* first8, ReadExact&& read_exact,
-                               InboundMessage& m, std::size_t max_size, const std::string& peer) {
+                               ReadPayload&& read_payload, InboundMessage& m, std::size_t max_size,
+                               const std::string& peer) {
   auto n = read_yarp_number(first8);
   if (!n || *n != kIndexLength) {
     throw ParseError(0, "message from " + peer + ": expected index header YA 0a 00 00 00 RP at "
@@ -58,8 +59,7 @@ void read_message_after_first8(const std::uint8_t* first8, ReadExact&& read_exac
   m.envelope = cmd.envelope();
   m.text_mode = false;
   m.reply_expected = cmd.key == 'd' || cmd.key == 'a';
-  m.payload.resize(rest);
-  if (rest) read_exact(m.payload.data(), rest);
+  read_payload(rest, m);
 }
 
 }  // namespace robogene::carrier::detail

@@ -95,7 +95,7 @@ void TextOutbound::set_timeout(net::Millis t) {
   link_->stream.set_write_timeout(t);
 }
 
-void TextOutbound::send(const OutboundMessage& m, Bottle* reply) {
+void TextOutbound::write_message(const OutboundMessage& m) {
   std::string text;
   switch (m.key) {
     case 'd': text = "d\r\n"; break;
@@ -110,10 +110,15 @@ void TextOutbound::send(const OutboundMessage& m, Bottle* reply) {
     text += "\r\n";
   }
   link_->stream.write_all(text.data(), text.size());
-  if (reversed_ || !acks_) {
+  awaiting_ = !reversed_ && acks_;
+}
+
+void TextOutbound::await_completion(Bottle* reply) {
+  if (!awaiting_) {
     if (reply) reply->clear();
     return;
   }
+  awaiting_ = false;
   std::string reply_text;
   for (;;) {
     std::string line = link_->reader.read_line(max_line_);

@@ -53,7 +53,8 @@ class TextOutbound final : public OutboundConnection {
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
 
-  void send(const OutboundMessage& m, Bottle* reply) override;
+  void write_message(const OutboundMessage& m) override;
+  void await_completion(Bottle* reply) override;
   void set_timeout(net::Millis t) override;
   void close() noexcept override;
   // Sends raw text lines (e.g. "a\r\n[list] [out]\r\n") and returns the reply lines that came
@@ -68,6 +69,7 @@ class TextOutbound final : public OutboundConnection {
   std::size_t max_line_;
   bool reversed_;
   bool closed_ = false;
+  bool awaiting_ = false;
 };
 
 }  // namespace robogene::carrier::detail

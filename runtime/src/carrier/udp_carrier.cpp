@@ -48,7 +48,14 @@ class UdpInbound final : public InboundConnection {
         std::uint8_t first8[8];
         pull(first8, 8);
         detail::read_message_after_first8(
-            first8, [&](void* p, std::size_t n) { pull(p, n); }, m, max_size_,
+            first8, [&](void* p, std::size_t n) { pull(p, n); },
+            [&](std::size_t n, InboundMessage& mm) {
+              mm.detached_blobs.clear();
+              mm.detached_blob_ordinals.clear();
+              mm.payload.resize(n);
+              if (n) pull(mm.payload.data(), n);
+            },
+            m, max_size_,
             remote_ + " (udp " + peer_ + ")");
         m.reply_expected = false;  // connectionless: nobody waits for a reply
         return true;
@@ -132,7 +139,7 @@ class UdpOutbound final : public OutboundConnection {
   bool is_text() const override { return false; }
   void interrupt() noexcept override { sock_.interrupt(); }
 
-  void send(const OutboundMessage& m, Bottle* reply) override {
+  void write_message(const OutboundMessage& m) override {
     if (m.bottle) {
       payload_.encode(*m.bottle);
       detail::frame_message(m, &payload_, head_, iov_);
@@ -154,7 +161,9 @@ class UdpOutbound final : public OutboundConnection {
       iovec parts[2] = {{prefix, kPrefix}, {bytes_.data() + at, n}};
       sock_.send_to(to_, parts, 2);
     }
-    if (reply) reply->clear();
+  }
+  void await_completion(Bottle* reply) override {
+    if (reply) reply->clear();  // connectionless: no reply, no ack
   }
   void set_timeout(net::Millis) override {}
   void close() noexcept override { sock_.close(); }

@@ -285,14 +285,28 @@ bool Port::write(const Bottle& b) {
   m.key = 'D';
   m.envelope = core_->envelope;
   m.bottle = &b;
-  bool any = false;
-  for (auto& o : outs) {
-    std::lock_guard<std::mutex> lock(o->mutex);
+  // Put the message on every connection first, then collect the acks: readers work in
+  // parallel and the last one does not wait for the others' round trips.
+  std::vector<std::unique_lock<std::mutex>> locks;
+  std::vector<bool> sent(outs.size(), false);
+  locks.reserve(outs.size());
+  for (std::size_t i = 0; i < outs.size(); ++i) {
+    locks.emplace_back(outs[i]->mutex);
     try {
-      o->conn->send(m);
+      outs[i]->conn->write_message(m);
+      sent[i] = true;
+    } catch (const std::exception& e) {
+      core_->drop_output(outs[i], e.what());
+    }
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < outs.size(); ++i) {
+    if (!sent[i]) continue;
+    try {
+      outs[i]->conn->await_completion(nullptr);
       any = true;
     } catch (const std::exception& e) {
-      core_->drop_output(o, e.what());
+      core_->drop_output(outs[i], e.what());
     }
   }
   return any;

@@ -138,7 +138,7 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
       try {
         DecodeLimits limits;
         limits.max_bytes = options.max_message_size;
-        data = msg.bottle(limits);
+        data = msg.take_bottle(limits);
       } catch (const ParseError& e) {
         log::warn(name, "dropped a message from " + unit.from + " (" + c.peer_text() +
                             "): " + e.what() + " (position " + std::to_string(e.position()) + ")");

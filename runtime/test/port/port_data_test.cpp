@@ -216,3 +216,47 @@ TEST(PortData, AddOutputToUnknownPortNamesIt) {
   }
   EXPECT_THROW(w.add_output("nobody"), Error);
 }
+
+TEST(PortData, LargeBlobsArriveIntactThroughTheDetachedPath) {
+  PortTable t;
+  Port r, w;
+  open_local(r, "/r", t);
+  open_local(w, "/w", t);
+  w.add_output("/r");
+  std::vector<std::uint8_t> a(921600), b(70000), small(100, 9);
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<std::uint8_t>(i * 13);
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = static_cast<std::uint8_t>(i * 7);
+  Bottle sent;
+  sent.add(Value::vocab("mat"));
+  sent.add(Value::blob(small.data(), small.size()));
+  Bottle nested;
+  nested.add(Value(1));
+  nested.add(Value::blob(a.data(), a.size()));
+  sent.add(Value::list(nested));
+  sent.add(Value::blob(b.data(), b.size()));
+  sent.add(Value::blob(std::vector<std::uint8_t>{}));
+  std::thread writer([&] { w.write(sent); });
+  Bottle got;
+  ASSERT_TRUE(r.read(got, false, 5000ms));
+  writer.join();
+  EXPECT_EQ(got, sent);
+}
+
+TEST(PortData, LargeMessageThatIsNotABottleIsDroppedAndTheStreamStaysInStep) {
+  PortTable t;
+  Port r;
+  open_local(r, "/r", t);
+  auto s = net::TcpStream::connect({"127.0.0.1", r.contact().port});
+  send(s, hex("59 41 e4 1e 00 00 52 50 03 00 00 00 2f 77 00"));
+  read_n(s, 8);
+  // 100000 payload bytes of 0x07: long enough for the walking reader, not a Bottle.
+  std::vector<std::uint8_t> junk = hex("59 41 0a 00 00 00 52 50 02 01 ff ff ff ff ff ff ff ff 08 00 00 00 a0 86 01 00 00 00 00 00 00 00 00 00 7e 44 00 01");
+  junk.resize(junk.size() + 100000, 7);
+  send(s, junk);
+  EXPECT_EQ(read_n(s, 8), hex("59 41 00 00 00 00 52 50"));
+  send(s, hex("59 41 0a 00 00 00 52 50 02 01 ff ff ff ff ff ff ff ff 08 00 00 00 0c 00 00 00 00 00"
+              "00 00 00 00 00 00 7e 44 00 01 01 01 00 00 01 00 00 00 2a 00 00 00"));
+  Bottle b;
+  ASSERT_TRUE(r.read(b, false, 5000ms));
+  EXPECT_EQ(b.to_text(), "42");
+}

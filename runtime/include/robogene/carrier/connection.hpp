@@ -60,7 +60,15 @@ class OutboundConnection : public Connection {
  public:
   // Sends one message. When `reply` is given and the message key is 'd' or 'a', waits for the
   // reply Bottle. Then waits for the carrier's ack, if any. Throws NetworkError on failure.
-  virtual void send(const OutboundMessage& m, Bottle* reply = nullptr) = 0;
+  void send(const OutboundMessage& m, Bottle* reply = nullptr) {
+    write_message(m);
+    await_completion(reply);
+  }
+  // The two halves of send(), so that a port writing to many readers can put the message on
+  // every connection before waiting for any ack. The Bottle may be released after write_message.
+  virtual void write_message(const OutboundMessage& m) = 0;
+  // Reads the reply (for 'd' / 'a', into `reply` when given) and the ack of the last message.
+  virtual void await_completion(Bottle* reply) = 0;
   // Bounds every later send (and the ack wait): a reader that stops reading makes send() throw.
   virtual void set_timeout(net::Millis t) = 0;
   // Polite close: sends the carrier's quit message where it has one, ignoring failures.

@@ -22,9 +22,16 @@ struct InboundMessage {
   bool text_mode = false;  // payload holds bottle text (text carriers) rather than binary
   bool reply_expected = false;
   std::vector<std::uint8_t> payload;  // the bytes after the PortCommand (reused across reads)
+  // Large blob bodies (binary carriers) are received straight into their own buffers instead of
+  // `payload`, which then holds those blobs with length 0; `detached_blob_ordinals` says which
+  // blobs (counted depth-first from 0) they are. Saves a copy of every image.
+  std::vector<std::vector<std::uint8_t>> detached_blobs;
+  std::vector<std::size_t> detached_blob_ordinals;
 
   // The payload as a Bottle, decoded from whichever form it has; throws ParseError.
   Bottle bottle(const DecodeLimits& limits = {}) const;
+  // The same, moving detached blob bodies into the Bottle (no copy); the message is spent.
+  Bottle take_bottle(const DecodeLimits& limits = {});
   std::string payload_text() const { return std::string(payload.begin(), payload.end()); }
 };
 

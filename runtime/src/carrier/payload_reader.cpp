@@ -1,0 +1,124 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "payload_reader.hpp"
+
+#include "robogene/carrier/yarp_number.hpp"
+
+namespace robogene::carrier::detail {
+
+namespace {
+
+constexpr std::int32_t kList = 0x100;
+constexpr std::int32_t kDict = 0x200;
+constexpr std::int32_t kBlob = 12;
+
+// Thrown (and caught below) when the bytes stop looking like a Bottle we can walk.
+struct NotWalkable {};
+
+class Walker {
+ public:
+  Walker(net::StreamReader& in, std::size_t size, InboundMessage& m) : in_(in), left_(size), m_(m) {}
+
+  void walk() {
+    std::int32_t tag = int32();
+    if ((tag & kList) == 0 || (tag & kDict)) throw NotWalkable{};
+    body(tag & 0xff, 0);
+  }
+
+  void read_rest() {
+    std::size_t at = m_.payload.size();
+    m_.payload.resize(at + left_);
+    if (left_) in_.read_exact(m_.payload.data() + at, left_);
+    left_ = 0;
+  }
+
+ private:
+  void body(std::int32_t sub, int depth) {
+    if (depth > 64) throw NotWalkable{};
+    std::int32_t count = int32();
+    if (count < 0) throw NotWalkable{};
+    for (std::int32_t i = 0; i < count; ++i) item(sub ? sub : int32(), depth);
+  }
+
+  void item(std::int32_t tag, int depth) {
+    if (tag & kDict) throw NotWalkable{};
+    if (tag & kList) {
+      body(tag & 0xff, depth + 1);
+      return;
+    }
+    switch (tag) {
+      case 32: copy(1); break;
+      case 64: copy(2); break;
+      case 1: case 9: case 128: copy(4); break;
+      case 17: case 10: copy(8); break;
+      case 4: {
+        std::int32_t len = int32();
+        if (len < 0) throw NotWalkable{};
+        copy(static_cast<std::size_t>(len));
+        break;
+      }
+      case kBlob: {
+        std::size_t len_at = m_.payload.size();
+        std::int32_t len = int32();
+        if (len < 0 || static_cast<std::size_t>(len) > left_) throw NotWalkable{};
+        auto n = static_cast<std::size_t>(len);
+        if (n >= kDetachBlobsFrom) {
+          put_int32(m_.payload.data() + len_at, 0);
+          std::vector<std::uint8_t> body(n);
+          in_.read_exact(body.data(), n);
+          left_ -= n;
+          m_.detached_blobs.push_back(std::move(body));
+          m_.detached_blob_ordinals.push_back(blob_ordinal_);
+        } else {
+          copy(n);
+        }
+        ++blob_ordinal_;
+        break;
+      }
+      default:
+        throw NotWalkable{};
+    }
+  }
+
+  std::int32_t int32() {
+    std::size_t at = m_.payload.size();
+    copy(4);
+    return get_int32(m_.payload.data() + at);
+  }
+
+  void copy(std::size_t n) {
+    if (n > left_) throw NotWalkable{};
+    std::size_t at = m_.payload.size();
+    m_.payload.resize(at + n);
+    in_.read_exact(m_.payload.data() + at, n);
+    left_ -= n;
+  }
+
+  net::StreamReader& in_;
+  std::size_t left_;
+  InboundMessage& m_;
+  std::size_t blob_ordinal_ = 0;
+};
+
+}  // namespace
+
+void read_payload(net::StreamReader& in, std::size_t size, InboundMessage& m) {
+  m.detached_blobs.clear();
+  m.detached_blob_ordinals.clear();
+  if (size < kDetachBlobsFrom) {
+    m.payload.resize(size);
+    if (size) in.read_exact(m.payload.data(), size);
+    return;
+  }
+  m.payload.clear();
+  Walker w(in, size, m);
+  try {
+    w.walk();
+  } catch (const NotWalkable&) {
+    // Not a Bottle we can walk: keep what was cut out, read the rest as bytes. The decoder
+    // will report the problem (or the owner reads raw bytes); the stream stays in step.
+  }
+  w.read_rest();
+}
+
+}  // namespace robogene::carrier::detail
