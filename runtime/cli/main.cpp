@@ -27,6 +27,23 @@ const Command kCommands[] = {
      "run the name server /root (default 127.0.0.1:10000); registrations persist in FILE", robogene::cli::cmd_server},
     {"name", "robogene name query|list|register|unregister|set|get|check|route|gc ARGS... [--server HOST:PORT]",
      "ask the name server, printing its replies as `yarp name` does", robogene::cli::cmd_name},
+    {"read", "robogene read /port [/source] [--envelope] [--server HOST:PORT]",
+     "open an input port and print every bottle received, one per line (stop with Ctrl-C)",
+     robogene::cli::cmd_read},
+    {"write", "robogene write /port [/destination ...] [--server HOST:PORT]",
+     "open an output port, connect it, and send each bottle typed on stdin (ends at EOF)",
+     robogene::cli::cmd_write},
+    {"rpc", "robogene rpc /port [--carrier tcp|text_ack|...] [--server HOST:PORT]",
+     "send each bottle typed on stdin as a request and print `Response: <reply>`", robogene::cli::cmd_rpc},
+    {"connect", "robogene connect /from /to [carrier] [--server HOST:PORT]",
+     "ask port /from to add an output to /to (admin [add] over text_ack, as yarp connect)",
+     robogene::cli::cmd_connect},
+    {"disconnect", "robogene disconnect /from /to [--server HOST:PORT]",
+     "ask port /from to drop its connection to /to (admin [del])", robogene::cli::cmd_disconnect},
+    {"ping", "robogene ping /port [--server HOST:PORT]", "check that a port is there and answers, with the time taken",
+     robogene::cli::cmd_ping},
+    {"ls", "robogene ls [/prefix] [--server HOST:PORT]",
+     "list registered ports with their connections and carriers", robogene::cli::cmd_ls},
 };
 
 const Command* find_command(const std::string& name) {

@@ -79,7 +79,7 @@ class NameSerOutbound final : public carrier::OutboundConnection {
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
 
-  void send(const carrier::OutboundMessage& m, Bottle* reply) override {
+  void write_message(const carrier::OutboundMessage& m) override {
     if (used_) throw Error("name_ser carries one request per connection (to " + peer_text() + ")");
     used_ = true;
     if (!m.bottle) throw Error("name_ser: nothing to send to " + peer_text());
@@ -87,6 +87,8 @@ class NameSerOutbound final : public carrier::OutboundConnection {
     std::string line = "VER " + m.bottle->to_text() + "\r\n";
     link_->stream.write_all(line.data(), line.size());
     ::shutdown(link_->stream.fd(), SHUT_WR);
+  }
+  void await_completion(Bottle* reply) override {
     Bottle lines;
     while (link_->reader.wait_for_data()) {
       std::string text = link_->reader.read_line(1u << 20);
