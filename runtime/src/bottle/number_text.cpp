@@ -12,6 +12,8 @@
 #include <limits>
 #include <locale.h>  // newlocale, strtod_l (POSIX / glibc)
 
+#include "robogene/error.hpp"
+
 namespace robogene::text {
 
 namespace {
@@ -81,7 +83,9 @@ double parse_float(std::string_view token) {
   if (token == "-inf") return -std::numeric_limits<double>::infinity();
   if (token == "nan") return std::numeric_limits<double>::quiet_NaN();
   const std::string s(token);
-  return strtod_l(s.c_str(), nullptr, c_locale());
+  const locale_t loc = c_locale();
+  if (loc == static_cast<locale_t>(nullptr)) throw Error("cannot create the \"C\" locale to read the number " + s);
+  return strtod_l(s.c_str(), nullptr, loc);
 }
 
 std::string format_float(double x) {
