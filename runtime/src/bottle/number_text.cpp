@@ -4,7 +4,6 @@
 // Number classification, parsing and formatting for the text form (reference section 2).
 #include "number_text.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <clocale>
 #include <cmath>
@@ -70,7 +69,6 @@ NumberKind classify_number(std::string_view s) noexcept {
 
 Value parse_integer(std::string_view token) {
   const std::string s(token);  // strtoll needs a terminator
-  errno = 0;
   const long long v = std::strtoll(s.c_str(), nullptr, 0);  // base 0: 0x.. hex, 0.. octal
   if (v >= std::numeric_limits<std::int32_t>::min() && v <= std::numeric_limits<std::int32_t>::max()) {
     return Value::int32(static_cast<std::int32_t>(v));
