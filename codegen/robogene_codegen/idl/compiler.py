@@ -372,6 +372,8 @@ class _Checker:
             return None
         if echo is None:
             return len(wire) - 1
+        if isinstance(echo, str):  # a vocab the reply carries instead of a request item
+            return echo if self._vocab_ok(echo, doc.mark(path + ("echo",))) else False
         if echo >= len(wire) + nargs:
             self.error(doc.mark(path + ("echo",)), f"echo {echo} of '{name}' is past the end of "
                        f"its request ({len(wire)} vocabs and {nargs} arguments)")

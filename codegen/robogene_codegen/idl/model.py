@@ -90,7 +90,7 @@ class Method:
     cpp_name: str      # the C++ name (all-axes forms may overload the single-axis name)
     doc: str
     wire: Optional[tuple]  # vocab path; None for local-only methods
-    echo: Optional[int]    # request index whose value the [is] reply repeats
+    echo: Union[int, str, None]  # request index the [is] reply repeats, or a vocab it carries
     args: list[Field]
     results: list[Field]
     mark: Mark

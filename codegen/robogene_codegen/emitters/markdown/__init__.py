@@ -31,7 +31,8 @@ def reply_text(m: Method) -> str:
     if not m.results:
         return "`[ok]` / `[fail]`"
     values = " ".join(f"({param_name(r)}…)" if r.per_axis else f"<{param_name(r)}>" for r in m.results)
-    return f"`[is] <request[{m.echo}]> {values} [tsta] <n> <t> [ok]` / `[fail]`"
+    echo = f"[{m.echo}]" if isinstance(m.echo, str) else f"<request[{m.echo}]>"
+    return f"`[is] {echo} {values} [tsta] <n> <t> [ok]` / `[fail]`"
 
 
 def cell(text: str) -> str:

@@ -19,7 +19,7 @@ namespace robogene::dev {
 class IControlMode {
  public:
   static constexpr const char* kInterfaceName = "IControlMode";
-  static constexpr const char* kFingerprint = "b33211265dc59f37";
+  static constexpr const char* kFingerprint = "39fbc5c9de86fd49";
   static constexpr int kVersion = 1;
 
   virtual ~IControlMode() = default;

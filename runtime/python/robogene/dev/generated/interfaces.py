@@ -20,7 +20,7 @@ class IControlMode(abc.ABC):
     """Switch each axis between control modes (idle, position, velocity, torque...)."""
 
     INTERFACE_NAME = "IControlMode"
-    FINGERPRINT = "b33211265dc59f37"
+    FINGERPRINT = "39fbc5c9de86fd49"
     VERSION = 1
 
     @abc.abstractmethod

@@ -70,9 +70,9 @@ VOCABS = {
 
 # interface -> (fingerprint, {method: (wire path or None, echo, argument types, result types)})
 INTERFACES = {
-    "IControlMode": ("b33211265dc59f37", {
+    "IControlMode": ("39fbc5c9de86fd49", {
         "getControlMode": (("get", "icmd", "cmod", ), 3, ("joint", ), ("ControlMode", )),
-        "getControlModes": (("get", "icmd", "cmds", ), 2, (), ("ControlMode[]", )),
+        "getControlModes": (("get", "icmd", "cmds", ), "cmds", (), ("ControlMode[]", )),
         "setControlMode": (("set", "icmd", "cmod", ), 2, ("joint", "ControlMode", ), ()),
         "setControlModes": (("set", "icmd", "cmds", ), 2, ("ControlMode[]", ), ()),
     }),
@@ -170,7 +170,7 @@ INTERFACES = {
 
 # service -> (fingerprint, interfaces, protocol (path, reply, version) or None, introspection path)
 SERVICES = {
-    "controlboard": ("2f358bff648797d3", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
+    "controlboard": ("250cecc3f9e97bd6", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
 (("get", "prot", ), "prot", [1, 9, 0]),
 ("get", "rgif", )),
     "grabber": ("989f003e54305536", ("IFrameGrabberImage", "IFrameGrabberControls", ),

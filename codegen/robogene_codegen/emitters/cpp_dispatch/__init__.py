@@ -1,0 +1,96 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""C++ server dispatch: for each service, a class that turns a request bottle into calls on a
+device's interfaces and a reply bottle of YARP 3's shape; plus the wire codec of enums/structs."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...idl.model import Field, Idl, Interface, Method, Service
+from ..common import (all_sources, environment, identifier, line_comment_header, param_name,
+                      vocab_text)
+from ..cpp_interfaces import INCLUDE_DIR, header_name, value_type
+
+SOURCE_DIR = "runtime/src/dev/generated"
+
+
+@dataclass
+class Route:
+    wire: tuple
+    echo: int
+    method: Method                  # the shape (all candidates share it)
+    candidates: list                # [(Interface, Method)] in the service's order
+
+    @property
+    def handler(self) -> str:
+        return "h_" + "_".join(identifier(v) for v in self.wire)
+
+
+def routes(service: Service) -> list[Route]:
+    found: dict[tuple, Route] = {}
+    for iface in service.interfaces:
+        for m in iface.methods:
+            if m.wire is None:
+                continue
+            if m.wire not in found:
+                found[m.wire] = Route(m.wire, m.echo, m, [])
+            found[m.wire].candidates.append((iface, m))
+    # Longest paths first, then by text, so that a longer path is never shadowed.
+    return sorted(found.values(), key=lambda r: (-len(r.wire), r.wire))
+
+
+def member(iface: Interface) -> str:
+    return iface.name.lower()
+
+
+def local_type(f: Field) -> str:
+    return "std::int32_t" if f.type.name == "joint" and not f.per_axis else value_type(f)
+
+
+def reader(f: Field) -> str:
+    return "rpc::read_vocab" if f.type.name == "vocab" and not f.per_axis else "read"
+
+
+def writer(f: Field) -> str:
+    return "rpc::write_vocab" if f.type.name == "vocab" and not f.per_axis else "write"
+
+
+def read_condition(r: Route) -> str:
+    n = len(r.wire)
+    return " ||\n      ".join(f"!{reader(a)}(req[{n + k}], {param_name(a)})"
+                               for k, a in enumerate(r.method.args))
+
+
+def call_args(m: Method) -> str:
+    return ", ".join(param_name(f) for f in m.args + m.results)
+
+
+def route_init(r: Route) -> str:
+    path = ", ".join(f'vocab("{v}")' for v in r.wire)
+    value = "true" if r.method.results else "false"
+    return f"{{{{{path}}}, {len(r.wire)}, {value}, &{r.handler}}}"
+
+
+def class_name(service: Service) -> str:
+    return "".join(p.capitalize() for p in service.name.split("_")) + "Server"
+
+
+def emit(idl: Idl) -> dict[str, str]:
+    env = environment(__file__)
+    helpers = dict(routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+                   writer=writer, param_name=param_name, class_name=class_name,
+                   header_name=header_name, identifier=identifier, vocab_text=vocab_text)
+    out = {}
+    sources = [f for f in all_sources(idl) if any(t.mark.file == f for t in idl.enums + idl.structs)]
+    out[f"{INCLUDE_DIR}/wire_types.hpp"] = env.get_template("wire_types.hpp.j2").render(
+        header=line_comment_header("//", "BSD-3-Clause", sources), idl=idl, **helpers)
+    for s in idl.services:
+        files = sorted({s.file} | {i.file for i in s.interfaces} |
+                       {t.mark.file for i in s.interfaces for t in list(i.enums) + list(i.structs)})
+        header = line_comment_header("//", "BSD-3-Clause", files)
+        max_path = max([len(r.wire) for r in routes(s)] + [len(s.protocol.wire) if s.protocol else 1,
+                                                            len(s.introspection or ())])
+        ctx = dict(header=header, s=s, max_path=max_path, **helpers)
+        out[f"{INCLUDE_DIR}/{s.name}_server.hpp"] = env.get_template("server.hpp.j2").render(**ctx)
+        out[f"{SOURCE_DIR}/{s.name}_server.cpp"] = env.get_template("server.cpp.j2").render(**ctx)
+    return out
