@@ -98,7 +98,7 @@ def main() -> int:
 
             import yarp
             yarp.Network.init()
-            version = yarp.getYarpVersion() if hasattr(yarp, "getYarpVersion") else "3.5.0"
+            version = yarp.YARP_VERSION_SHORT  # the PyPI 3.5.0 sdist calls itself "3.5.0~dev" in YARP_VERSION
             port = yarp.Port()
             if not port.open("/interop_vectors"):
                 raise RuntimeError("cannot open /interop_vectors")

@@ -16,14 +16,20 @@ def yarp_peer_venv() -> Path:
 
 
 def yarp_tool(name: str) -> str:
-    path = yarp_peer_venv() / "bin" / name
-    if not os.access(path, os.X_OK):
-        raise FileNotFoundError(f"YARP peer tool {path} missing: build it with `make yarp-peer`")
-    return str(path)
+    """The real executable: the venv's bin/<name> is a Python launcher that runs it as a child,
+    which would put an extra process between the tests and the tool."""
+    for path in sorted(yarp_peer_venv().glob(f"lib/python3*/site-packages/yarp/bin/{name}")):
+        if os.access(path, os.X_OK):
+            return str(path)
+    raise FileNotFoundError(f"YARP peer tool {name} missing under {yarp_peer_venv()}: "
+                            "build it with `make yarp-peer`")
 
 
 def yarp_python() -> str:
-    return yarp_tool("python")
+    path = yarp_peer_venv() / "bin" / "python"
+    if not os.access(path, os.X_OK):
+        raise FileNotFoundError(f"{path} missing: build the YARP peer with `make yarp-peer`")
+    return str(path)
 
 
 def robogene_bin() -> str:

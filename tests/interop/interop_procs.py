@@ -16,9 +16,12 @@ from typing import Callable, Optional, Sequence
 class Proc:
     """One child process (its own session) with stdin fed by the test and stdout/stderr collected."""
 
-    def __init__(self, name: str, argv: Sequence[str], env: dict, cwd: Optional[str] = None):
+    def __init__(self, name: str, argv: Sequence[str], env: dict, cwd: Optional[str] = None,
+                 log_pattern: Optional[str] = None):
         self.name = name
         self.argv = list(argv)
+        # stdout lines matching log_pattern are the tool's log, not its data (YARP logs INFO to stdout)
+        self._log = re.compile(log_pattern) if log_pattern else None
         self._lock = threading.Condition()
         self._out: list[str] = []
         self._err: list[str] = []
@@ -52,6 +55,15 @@ class Proc:
         with self._lock:
             return list(self._err)
 
+    def _data(self) -> list[str]:
+        return [l for l in self._out if not (self._log and self._log.search(l))]
+
+    @property
+    def data(self) -> list[str]:
+        """stdout without the log lines: what the tool printed as its output proper."""
+        with self._lock:
+            return self._data()
+
     def describe(self) -> str:
         rc = self._popen.poll()
         state = "running" if rc is None else f"exited with {rc}"
@@ -68,9 +80,10 @@ class Proc:
                     raise AssertionError(f"timed out after {timeout:.1f} s waiting for {what}\n{self.describe()}")
                 self._lock.wait(min(left, 0.05))
 
-    def wait_stdout_lines(self, count: int, timeout: float) -> list[str]:
-        self.wait_until(f"{count} stdout lines", lambda: len(self._out) >= count, timeout)
-        return self.stdout
+    def wait_data(self, count: int, timeout: float) -> list[str]:
+        """Wait for count data lines on stdout; returns all of them (possibly more than count)."""
+        self.wait_until(f"{count} data lines on stdout", lambda: len(self._data()) >= count, timeout)
+        return self.data
 
     def wait_output(self, pattern: str, timeout: float, stream: str = "both") -> str:
         """Wait for a line matching the regex pattern on stdout, stderr or both; return the line."""
@@ -148,8 +161,9 @@ class ProcessGroup:
     def __init__(self):
         self._procs: list[Proc] = []
 
-    def start(self, name: str, argv: Sequence[str], env: dict, cwd: Optional[str] = None) -> Proc:
-        proc = Proc(name, argv, env, cwd)
+    def start(self, name: str, argv: Sequence[str], env: dict, cwd: Optional[str] = None,
+              log_pattern: Optional[str] = None) -> Proc:
+        proc = Proc(name, argv, env, cwd, log_pattern)
         self._procs.append(proc)
         return proc
 
@@ -157,6 +171,15 @@ class ProcessGroup:
         for proc in reversed(self._procs):
             proc.stop()
         self._procs.clear()
+
+    def _data(self) -> list[str]:
+        return [l for l in self._out if not (self._log and self._log.search(l))]
+
+    @property
+    def data(self) -> list[str]:
+        """stdout without the log lines: what the tool printed as its output proper."""
+        with self._lock:
+            return self._data()
 
     def describe(self) -> str:
         return "\n".join(p.describe() for p in self._procs)

@@ -16,6 +16,11 @@ from interop_peer import PrivateNetwork, robogene_bin, yarp_python, yarp_tool
 from interop_procs import Proc, ProcessGroup, run
 
 START_TIMEOUT = 15.0
+# YARP 3.5 logs INFO to stdout ("[INFO] |yarp.os.Port|/r| Port /r active at ...") and the companion
+# prints "Interrupting..." when stopped; everything else on a tool's stdout is its data.
+YARP_LOG = r"^\[(INFO|DEBUG|TRACE|WARNING|ERROR|FATAL)\]|^Interrupting\.\.\.$"
+# YARP's tools print with C stdio, which is block-buffered on a pipe: force line buffering.
+LINE_BUFFERED = ["stdbuf", "-oL", "-eL"]
 HERE = Path(__file__).resolve().parent
 
 
@@ -24,30 +29,33 @@ class YarpTools:
         self.procs, self.net = procs, net
 
     def server(self) -> Proc:
-        proc = self.procs.start("yarpserver", [
+        proc = self._start("yarpserver", [
             yarp_tool("yarpserver"), "--ip", "127.0.0.1", "--socket", str(self.net.ns_port), "--read",
-            "--portdb", ":memory:", "--subdb", ":memory:"], self.net.env, cwd=str(self.net.base))
+            "--portdb", ":memory:", "--subdb", ":memory:"], cwd=str(self.net.base))
         net_.wait_registered(self.net.ns_port, "/root", START_TIMEOUT)
         return proc
 
+    def _start(self, name: str, argv: list, cwd=None) -> Proc:
+        return self.procs.start(name, LINE_BUFFERED + argv, self.net.env, cwd, YARP_LOG)
+
     def read(self, port: str, *extra: str) -> Proc:
-        proc = self.procs.start(f"yarp read {port}", [yarp_tool("yarp"), "read", port, *extra], self.net.env)
+        proc = self._start(f"yarp read {port}", [yarp_tool("yarp"), "read", port, *extra])
         net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
         return proc
 
     def write(self, port: str, *targets: str) -> Proc:
-        proc = self.procs.start(f"yarp write {port}", [yarp_tool("yarp"), "write", port, *targets], self.net.env)
+        proc = self._start(f"yarp write {port}", [yarp_tool("yarp"), "write", port, *targets])
         net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
         for target in targets:
-            proc.wait_output(rf"Sending output from {port} to {target} using", START_TIMEOUT, "stderr")
+            proc.wait_output(rf"Sending output from {port} to {target} using", START_TIMEOUT)
         return proc
 
     def rpc(self, target: str) -> Proc:
-        return self.procs.start(f"yarp rpc {target}", [yarp_tool("yarp"), "rpc", target], self.net.env)
+        return self._start(f"yarp rpc {target}", [yarp_tool("yarp"), "rpc", target])
 
     def python(self, name: str, script: str, *args: str) -> Proc:
         """A script of tests/interop run by the peer's interpreter (with the SWIG `yarp` module)."""
-        return self.procs.start(name, [yarp_python(), str(HERE / script), *args], self.net.env)
+        return self._start(name, [yarp_python(), str(HERE / script), *args])
 
     def echo_server(self, port: str) -> Proc:
         proc = self.python(f"yarp echo {port}", "yarp_echo_server.py", port)
@@ -63,7 +71,7 @@ class YarpTools:
         return proc
 
     def dev(self, *args: str) -> Proc:
-        return self.procs.start("yarpdev", [yarp_tool("yarpdev"), *args], self.net.env)
+        return self._start("yarpdev", [yarp_tool("yarpdev"), *args])
 
     def cmd(self, *args: str, timeout: float = 20.0, stdin: str = "") -> subprocess.CompletedProcess:
         return run([yarp_tool("yarp"), *args], self.net.env, timeout, stdin)

@@ -15,7 +15,7 @@ def test_yarp_connect_and_disconnect_between_our_ports(yarpserver, yarp, ours, n
     assert yarp.cmd("connect", "/interop/ow", "/interop/or").returncode == 0
     interop_net.wait_connection(net.ns_port, "/interop/ow", "/interop/or")
     writer.send("before 1")
-    assert reader.wait_stdout_lines(1, 10) == ["before 1"]
+    assert reader.wait_data(1, 10) == ["before 1"]
 
     done = yarp.cmd("disconnect", "/interop/ow", "/interop/or")
     assert done.returncode == 0, done
@@ -26,7 +26,7 @@ def test_yarp_connect_and_disconnect_between_our_ports(yarpserver, yarp, ours, n
     assert yarp.cmd("connect", "/interop/ow", "/interop/or").returncode == 0
     interop_net.wait_connection(net.ns_port, "/interop/ow", "/interop/or")
     writer.send("after 2")
-    assert reader.wait_stdout_lines(2, 10) == ["before 1", "after 2"]
+    assert reader.wait_data(2, 10) == ["before 1", "after 2"]
 
 
 def test_yarp_connect_reports_a_missing_target_of_our_port(yarpserver, yarp, ours):
@@ -43,13 +43,13 @@ def test_robogene_connect_and_disconnect_between_yarp_ports(carrier, yarpserver,
     done = ours.cmd(*args)
     assert done.returncode == 0, done
     used = carrier or "tcp"
-    reader.wait_output(rf"Receiving input from /interop/yw to /interop/yr using {used}", 15, "stderr")
+    reader.wait_output(rf"Receiving input from /interop/yw to /interop/yr using {used}", 15)
     writer.send("[ok] 1 (2.5 x)")
-    assert reader.wait_stdout_lines(1, 10) == ["[ok] 1 (2.5 x)"]
+    assert reader.wait_data(1, 10) == ["[ok] 1 (2.5 x)"]
 
     done = ours.cmd("disconnect", "/interop/yw", "/interop/yr")
     assert done.returncode == 0, done
-    reader.wait_output(r"Removing input from /interop/yw to /interop/yr", 15, "stderr")
+    reader.wait_output(r"Removing input from /interop/yw to /interop/yr", 15)
     listed = interop_net.admin_text_ack(interop_net.query(net.ns_port, "/interop/yw"), "[list] [out]")
     assert "/interop/yr" not in listed
 

@@ -79,7 +79,7 @@ def test_yarp_ports_talk_through_our_name_server(procs, net, yarp_bottle_vectors
     reader = yarp.read("/interop/yr")
     writer = yarp.write("/interop/yw", "/interop/yr")
     writer.send('1 2.5 "hi" [set]')
-    assert reader.wait_stdout_lines(1, 10) == ["1 2.5 hi [set]"]
+    assert reader.wait_data(1, 10) == ["1 2.5 hi [set]"]
     listed = yarp.cmd("name", "list").stdout.decode()
     assert "registration name /interop/yr ip 127.0.0.1" in listed and "registration name /interop/yw" in listed
     reader.stop()

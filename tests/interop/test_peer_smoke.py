@@ -28,7 +28,7 @@ def test_yarp_write_to_yarp_read_matches_committed_vectors(yarpserver, yarp, yar
     writer = yarp.write("/smoke/w", "/smoke/r")
     for case in cases:
         writer.send(case["text"])
-    got = reader.wait_stdout_lines(len(cases), 10)
+    got = reader.wait_data(len(cases), 10)
     assert got == [c["canonical_text"] for c in cases]
 
 

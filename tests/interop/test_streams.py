@@ -20,7 +20,7 @@ def test_yarp_write_to_yarp_read_every_vector(yarpserver, yarp, yarp_bottle_vect
     writer = yarp.write("/interop/yw", "/interop/yr")
     for case in cases:
         writer.send(case["text"])
-    assert_same_lines(cases, reader.wait_stdout_lines(len(cases), 30), "yarp write -> yarp read")
+    assert_same_lines(cases, reader.wait_data(len(cases), 30), "yarp write -> yarp read")
 
 
 def test_yarp_write_to_robogene_read(yarpserver, yarp, ours, yarp_bottle_vectors):
@@ -29,7 +29,7 @@ def test_yarp_write_to_robogene_read(yarpserver, yarp, ours, yarp_bottle_vectors
     writer = yarp.write("/interop/yw", "/interop/or")
     for case in cases:
         writer.send(case["text"])
-    got = reader.wait_stdout_lines(len(cases), 30)
+    got = reader.wait_data(len(cases), 30)
     assert_same_lines(cases, got, "yarp write -> robogene read")
 
 
@@ -37,10 +37,10 @@ def test_robogene_write_to_yarp_read(yarpserver, yarp, ours, yarp_bottle_vectors
     cases = line_cases(yarp_bottle_vectors)
     reader = yarp.read("/interop/yr")
     writer = ours.write("/interop/ow", "/interop/yr")
-    reader.wait_output(r"Receiving input from /interop/ow to /interop/yr using tcp", 15, "stderr")
+    reader.wait_output(r"Receiving input from /interop/ow to /interop/yr using tcp", 15)
     for case in cases:
         writer.send(case["text"])
-    got = reader.wait_stdout_lines(len(cases), 30)
+    got = reader.wait_data(len(cases), 30)
     assert_same_lines(cases, got, "robogene write -> yarp read")
 
 
@@ -51,10 +51,10 @@ def test_yarp_connect_yarp_writer_to_robogene_reader(carrier, yarpserver, yarp, 
     writer = yarp.write("/interop/yw")
     done = yarp.cmd("connect", "/interop/yw", "/interop/or", carrier)
     assert done.returncode == 0, done
-    writer.wait_output(rf"Sending output from /interop/yw to /interop/or using {carrier}", 15, "stderr")
+    writer.wait_output(rf"Sending output from /interop/yw to /interop/or using {carrier}", 15)
     for case in cases:
         writer.send(case["text"])
-    assert_same_lines(cases, reader.wait_stdout_lines(len(cases), 15), f"yarp write -{carrier}-> robogene read")
+    assert_same_lines(cases, reader.wait_data(len(cases), 15), f"yarp write -{carrier}-> robogene read")
 
 
 @pytest.mark.parametrize("carrier", ["tcp", "fast_tcp", "udp", "text", "text_ack"])
@@ -65,7 +65,7 @@ def test_yarp_connect_robogene_writer_to_yarp_reader(carrier, yarpserver, yarp, 
     writer = ours.write("/interop/ow")
     done = yarp.cmd("connect", "/interop/ow", "/interop/yr", carrier)
     assert done.returncode == 0, done
-    reader.wait_output(rf"Receiving input from /interop/ow to /interop/yr using {carrier}", 15, "stderr")
+    reader.wait_output(rf"Receiving input from /interop/ow to /interop/yr using {carrier}", 15)
     for case in cases:
         writer.send(case["text"])
-    assert_same_lines(cases, reader.wait_stdout_lines(len(cases), 15), f"robogene write -{carrier}-> yarp read")
+    assert_same_lines(cases, reader.wait_data(len(cases), 15), f"robogene write -{carrier}-> yarp read")
