@@ -25,10 +25,9 @@ def make_copy(tmp_path: Path) -> Path:
         if (ROOT / d).is_dir():
             shutil.copytree(ROOT / d, root / d, ignore=shutil.ignore_patterns("__pycache__"))
     shutil.copytree(ROOT / "runtime" / "include", root / "runtime" / "include", dirs_exist_ok=True)
-    shutil.copy(ROOT / "runtime" / "python" / "robogene" / "dev" / "image.py",
-                root / "runtime" / "python" / "robogene" / "dev" / "image.py")
-    shutil.copy(ROOT / "runtime" / "python" / "robogene" / "dev" / "__init__.py",
-                root / "runtime" / "python" / "robogene" / "dev" / "__init__.py")
+    shutil.copytree(ROOT / "runtime" / "python" / "robogene" / "dev",
+                    root / "runtime" / "python" / "robogene" / "dev", dirs_exist_ok=True,
+                    ignore=shutil.ignore_patterns("__pycache__", "generated"))
     return root
 
 

@@ -1,0 +1,183 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The Python side of devices: Property, PolyDriver and test_motor, paper section 3.3 included.
+
+robogene.dev is pure Python; it is loaded from the source tree under a bare `robogene` package,
+so these tests need neither the compiled core nor an installed wheel."""
+import math
+import sys
+import time
+import types
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+if "robogene" not in sys.modules:
+    _pkg = types.ModuleType("robogene")
+    _pkg.__path__ = [str(ROOT / "runtime" / "python" / "robogene")]
+    sys.modules["robogene"] = _pkg
+
+from robogene.dev import (ConfigError, ControlMode, DriverFactory, IEncoders,  # noqa: E402
+                          IFrameGrabberImage, IPositionControl, ISimulationClock, IVelocityControl,
+                          PolyDriver, Property)
+
+
+def profile(t, v, a, distance):
+    """Rest-to-rest position after t seconds: a trapezoid, or a triangle for short moves."""
+    peak = min(v, math.sqrt(a * distance))
+    ramp = peak / a
+    total = distance / peak + ramp
+    if t <= 0:
+        return 0.0
+    if t < ramp:
+        return 0.5 * a * t * t
+    if t < total - ramp:
+        return 0.5 * a * ramp * ramp + peak * (t - ramp)
+    if t < total:
+        return distance - 0.5 * a * (total - t) ** 2
+    return distance
+
+
+TOL = 0.01
+
+
+def manual_motor(axes=4):
+    config = Property.from_dict({"device": "test_motor", "axes": axes, "clock": "manual"})
+    device = PolyDriver(config)
+    assert device.is_valid(), device.last_error
+    return device, device.view(ISimulationClock)
+
+
+def test_paper_section_3_3_as_written():
+    device = PolyDriver()
+    device.open("test_motor")
+
+    ipos = device.view(IPositionControl)
+    ivel = device.view(IVelocityControl)
+    assert ipos is not None and ivel is not None
+
+    start = time.monotonic()
+    ipos.setRefAcceleration(0, 100)
+    ipos.setRefSpeed(0, 5)
+    ipos.positionMove(0, 40)
+
+    ivel.setRefAcceleration(1, 100)
+    ivel.velocityMove(1, 5)
+
+    time.sleep(0.3)
+    encs = device.view(IEncoders).getEncoders()
+    elapsed = time.monotonic() - start
+    assert len(encs) == 4
+    assert profile(0.3, 5, 100, 40) - TOL <= encs[0] <= profile(elapsed, 5, 100, 40) + TOL
+    assert profile(0.3, 5, 100, 1e9) - TOL <= encs[1] <= profile(elapsed, 5, 100, 1e9) + TOL
+    assert encs[2:] == [0.0, 0.0]
+    assert ipos.checkMotionDone(0) is False
+
+
+def test_position_move_follows_the_profile_in_simulated_time():
+    device, clock = manual_motor()
+    ipos, enc = device.view(IPositionControl), device.view(IEncoders)
+    ipos.setRefAcceleration(0, 100)
+    ipos.setRefSpeed(0, 5)
+    ipos.positionMove(0, 40)
+    peak = 0.0
+    for step in range(1, 806):  # 8.05 s in 10 ms steps
+        assert clock.advance(0.01)
+        assert enc.getEncoder(0) == pytest.approx(profile(step * 0.01, 5, 100, 40), abs=TOL)
+        peak = max(peak, abs(enc.getEncoderSpeed(0)))
+    assert peak == pytest.approx(5.0, abs=1e-9)
+    assert clock.advance(1.0)
+    assert enc.getEncoder(0) == 40.0 and ipos.checkMotionDone(0) is True
+
+
+def test_velocity_move_stop_and_modes():
+    device, clock = manual_motor()
+    ivel, enc = device.view(IVelocityControl), device.view(IEncoders)
+    assert ivel.setRefAcceleration(1, 100) and ivel.velocityMove(1, 5)
+    assert clock.advance(10.0)
+    assert enc.getEncoder(1) == pytest.approx(50.0 - 25.0 / 200, abs=TOL)
+    assert device.view(IPositionControl).getTargetPosition(1) == 0.0
+    assert device.view(IVelocityControl).getRefVelocity(1) == 5.0
+    assert device._device.getControlMode(1) == ControlMode.VELOCITY
+    before = enc.getEncoder(1)
+    assert ivel.stop(1)
+    assert clock.advance(1.0)
+    assert enc.getEncoder(1) == pytest.approx(before + 25.0 / 200, abs=TOL)
+    assert enc.getEncoderSpeed(1) == 0.0
+
+
+def test_bad_requests_are_refused_and_change_nothing():
+    device, clock = manual_motor(2)
+    ipos = device.view(IPositionControl)
+    assert ipos.positionMove(2, 1.0) is False
+    assert ipos.positionMove(True, 1.0) is False
+    assert ipos.positionMove(0, float("nan")) is False
+    assert ipos.setRefSpeed(0, 0.0) is False
+    assert ipos.positionMoveAll([1.0, 2.0, 3.0]) is False
+    assert ipos.setRefSpeeds([5.0, -1.0]) is False
+    assert ipos.getRefSpeed(0) == 10.0
+    assert device._device.setControlMode(0, ControlMode.TORQUE) is False
+    assert clock.advance(-1) is False
+    assert device.view(IEncoders).getEncoder(5) is None
+    assert device.view(IEncoders).getEncoders() == [0.0, 0.0]
+
+
+def test_view_of_an_unimplemented_interface_is_none():
+    device = PolyDriver("test_motor")
+    assert device.view(IFrameGrabberImage) is None
+    assert device.view(IEncoders).getAxes() == 4
+    device.close()
+    assert device.view(IEncoders) is None
+
+
+def test_failures_say_what_and_where():
+    device = PolyDriver()
+    assert not device.open("dragonfly")
+    assert device.last_error.startswith("unknown device 'dragonfly' (known devices: ")
+    assert not device.open(Property.from_ini("axes 2\n", "motor.ini"))
+    assert device.last_error == "motor.ini: no 'device' key naming the driver to open"
+    assert not device.open(Property.from_ini("device test_motor\naxes 100\n", "motor.ini"))
+    assert device.last_error == "device 'test_motor': motor.ini:2: key 'axes': 100 is outside [1, 64]"
+    assert "test_motor" in DriverFactory.instance().names()
+
+
+def test_property_from_ini_command_line_and_dict():
+    p = Property.from_ini('# motor\ndevice test_motor // c\naxes 2\nname "/m # x"\nlim 0.0 90.5 (1 2)\n'
+                          "flag\n[GENERAL]\nJoints 4\n", "motor.ini")
+    assert p.get_string("device", "") == "test_motor"
+    assert p.get_int("axes", 0, 1, 64) == 2
+    assert p.get_string("name", "") == "/m # x"
+    assert p.find("lim") == [0.0, 90.5, [1, 2]]
+    assert p.get_bool("flag", False) is True
+    assert p.find_group("GENERAL").get_int("Joints", 0, 0, 9) == 4
+    assert p.origin("axes") == "motor.ini:3"
+    c = Property.from_command_line(["--device", "test_motor", "--axes", "2", "--single_port",
+                                    "--GENERAL::Joints", "4", "--pos", "1", "2.5"])
+    assert c.get_int("axes", 0, 0, 9) == 2 and c.get_bool("single_port", False)
+    assert c.find_group("GENERAL").get_int("Joints", 0, 0, 9) == 4
+    assert c.find("pos") == [1, 2.5]
+    assert c.origin("axes") == "command line argument 3"
+
+
+@pytest.mark.parametrize("text,message", [
+    ("axes 2\n  speed (1 2\n", "m.ini:2:9: '(' has no matching ')'"),
+    ("axes 2\n[broken\n", "m.ini:2:1: a group header is [name], got '[broken'"),
+    ("axes 2\naxes 3\n", "m.ini:2:1: key 'axes' is already set at m.ini:1"),
+])
+def test_ini_errors_name_file_line_and_column(text, message):
+    with pytest.raises(ConfigError) as info:
+        Property.from_ini(text, "m.ini")
+    assert str(info.value) == message
+
+
+def test_typed_reads_name_the_origin():
+    p = Property.from_ini("axes two\nspeed 1e9\nflag maybe\n", "m.ini")
+    with pytest.raises(ConfigError, match=r"^m\.ini:1: key 'axes': expected an integer, got 'two'$"):
+        p.get_int("axes", 0, 1, 64)
+    with pytest.raises(ConfigError, match=r"^m\.ini:2: key 'speed': 1000000000\.0 is outside"):
+        p.get_float("speed", 0, 0, 100)
+    with pytest.raises(ConfigError, match=r"^m\.ini:3: key 'flag': expected true or false"):
+        p.get_bool("flag", False)
+    with pytest.raises(ConfigError, match=r"^m\.ini: missing key 'nope'$"):
+        p.require("nope")
