@@ -77,11 +77,14 @@ def load(path: Path | str | None = None) -> Catalog:
         for field in FIELDS:
             if field not in entry:
                 raise CatalogError(f"{where}.{field}: missing")
-        for field in FIELDS[:-1]:
+        for field in FIELDS[:-2]:
             if not isinstance(entry[field], str) or not entry[field].strip():
                 raise CatalogError(f"{where}.{field}: expected a non-empty string")
-        if not re.fullmatch(r"https://[^\s/]+\.[^\s/]+/\S*", entry["datasheet"]):
-            raise CatalogError(f"{where}.datasheet: expected an https:// link, got {entry['datasheet']!r}")
+        generic = entry["manufacturer"].strip().lower().startswith("generic")
+        if not (generic and entry["datasheet"] == "") and not (
+                isinstance(entry["datasheet"], str) and re.fullmatch(r"https://[^\s/]+\.[^\s/]+/\S*", entry["datasheet"])):
+            raise CatalogError(f"{where}.datasheet: expected an https:// link (only generic parts may leave it empty), "
+                               f"got {entry['datasheet']!r}")
         breaks = entry["breaks"]
         if not isinstance(breaks, list) or not breaks:
             raise CatalogError(f"{where}.breaks: expected a list of [minimum quantity, unit price]")

@@ -63,7 +63,8 @@ def to_markdown(bom: Bom, batch: int) -> str:
     out = [f"| # | part | manufacturer | MPN | qty/head | unit ({c}, batch of {batch}) | line ({c}, batch) |",
            "|---:|---|---|---|---:|---:|---:|"]
     for i, r in enumerate(rows(bom, batch), start=1):
-        out.append(f"| {i} | [{_md_escape(r['description'])}]({r['datasheet']}) | {_md_escape(r['manufacturer'])} | "
+        part = f"[{_md_escape(r['description'])}]({r['datasheet']})" if r["datasheet"] else _md_escape(r["description"])
+        out.append(f"| {i} | {part} | {_md_escape(r['manufacturer'])} | "
                    f"{_md_escape(r['mpn'])} | {r['qty_per_head']} | {r['unit_price_batch']} | {r['line_cost_batch']} |")
     out += ["", f"Purchased parts: **{c} {_money(one)} for one head**, {c} {_money(each)} per head in a batch of "
                 f"{batch} ({c} {_money(total)} for the batch). Estimated list prices, not quotes.", ""]
@@ -86,7 +87,8 @@ def to_html(bom: Bom, batch: int, title: str) -> str:
             "<table><thead><tr><th>#</th><th>part</th><th>manufacturer</th><th>MPN</th><th>supplier</th>"
             f"<th>qty/head</th><th>qty (batch)</th><th>unit {c}</th><th>line {c}</th></tr></thead><tbody>"]
     for i, r in enumerate(rows(bom, batch), start=1):
-        body.append(f"<tr><td>{i}</td><td><a href=\"{e(r['datasheet'])}\">{e(r['description'])}</a></td>"
+        part = f"<a href=\"{e(r['datasheet'])}\">{e(r['description'])}</a>" if r["datasheet"] else e(r["description"])
+        body.append(f"<tr><td>{i}</td><td>{part}</td>"
                     f"<td>{e(r['manufacturer'])}</td><td>{e(r['mpn'])}</td><td>{e(r['supplier'])}</td>"
                     f"<td class=n>{r['qty_per_head']}</td><td class=n>{r['qty_batch']}</td>"
                     f"<td class=n>{r['unit_price_batch']}</td><td class=n>{r['line_cost_batch']}</td></tr>")

@@ -67,6 +67,17 @@ def _bounds(fragment):
         for x, y in pairs:
             xs.append(x)
             ys.append(-y)  # the fragment flips y with scale(1,-1)
+    num = r'"\s*([-\d.eE]+)\s*"'
+    for cx, cy, r in re.findall(r"<circle\s+cx\s*=" + num + r"\s+cy\s*=" + num + r"\s+r\s*=" + num, fragment):
+        cx, cy, r = float(cx), -float(cy), float(r)
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
+    for cx, cy, rx, ry in re.findall(r"<ellipse\s+cx\s*=" + num + r"\s+cy\s*=" + num + r"\s+rx\s*=" + num +
+                                     r"\s+ry\s*=" + num, fragment):
+        cx, cy, rx, ry = float(cx), -float(cy), float(rx), float(ry)
+        r = max(rx, ry)   # the ellipse may be rotated: bound it by its larger radius
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
     if not xs:
         return None
     return min(xs), max(xs), min(ys), max(ys)

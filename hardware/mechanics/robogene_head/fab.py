@@ -11,13 +11,14 @@ import argparse
 import hashlib
 import json
 import os
+import subprocess
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-from . import kinematics, massprops, openscad, render, urdf
+from . import joint_config, kinematics, massprops, openscad, render, urdf
 from .assembly import Assembly
 from .cache import Cache, digest
 from .checks import interference, mesh, validity
@@ -98,6 +99,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     props = massprops.link_props(params, parts)
     (out / "urdf").mkdir(parents=True, exist_ok=True)
     (out / "urdf" / "robogene_head.urdf").write_text(urdf.generate(params, props))
+    _write(out / "config" / "head-joints.json", json.dumps(joint_config.config(params), indent=1))
     mass_report = mass_summary(params, props)
     _write(out / "reports" / "mass.json", json.dumps(mass_report, indent=1))
 
@@ -164,7 +166,10 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     fc_out = [out / "reports" / "freecad-step-check.json"] + [out / "drawings" / f"{d}.svg" for d in machined]
     if not cache.fresh("freecad", fc_key, fc_out):
         progress.note(f"FreeCAD: re-open {len(step_files)} STEP files, draw {len(machined)} machined parts")
-        freecad.run(step_files, expected, machined, out, materials, solids)
+        try:
+            freecad.run(step_files, expected, machined, out, materials, solids)
+        except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
+            raise BuildError(str(exc)) from None
         cache.record("freecad", fc_key)
     fc_report = json.loads(fc_out[0].read_text())
     bad_steps = [r for r in fc_report["files"] if not r["ok"]]
@@ -185,8 +190,13 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # 10. Bill of materials.
     sys.path.insert(0, str(REPO / "hardware" / "bom"))
     from robogene_bom import build as bom_build
+    from robogene_bom.board import BoardBomError
+    from robogene_bom.catalog import CatalogError
     progress.note("BOM")
-    bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch)
+    try:
+        bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch)
+    except (CatalogError, BoardBomError) as exc:
+        raise BuildError(str(exc)) from None
 
     # 11. Summary and manifest with checksums.
     _write(out / "parts.json", json.dumps(summary, indent=1))
@@ -206,7 +216,7 @@ def mass_summary(params, props) -> dict:
     ref_i = ref.node("head_inertia_kgmm2")
     out = {"links": {}, "head_above_yaw": {}, "reference": {}}
     for link, mp in props.items():
-        out["links"][link] = {"mass_kg": round(mp.mass, 5), "com_mm": [round(v, 3) for v in mp.com],
+        out["links"][link] = {"mass_kg": round(mp.mass, 7), "com_mm": [round(v, 3) for v in mp.com],
                               "inertia_kgmm2": [[round(v, 3) for v in row] for row in mp.inertia]}
     out["head_above_yaw"] = {"mass_kg": round(head.mass, 5), "com_mm": [round(v, 3) for v in head.com],
                              "inertia_kgmm2": [[round(v, 3) for v in row] for row in head.inertia]}

@@ -28,8 +28,9 @@ def tube(axis: str, outside: float, bore: float, start: float, end: float, at=(0
     return cyl(axis, outside, start, end, at).cut(cyl(axis, bore, start - 1, end + 1, at))
 
 
-def sphere(radius: float, centre=(0.0, 0.0, 0.0)) -> cq.Solid:
-    return cq.Solid.makeSphere(radius, cq.Vector(*centre), angleDegrees1=-90, angleDegrees2=90)
+def sphere(radius: float, centre=(0.0, 0.0, 0.0), poles: str = "z") -> cq.Solid:
+    """Sphere whose poles lie on the given axis (cut the poles away: meshers leave slivers there)."""
+    return cq.Solid.makeSphere(radius, cq.Vector(*centre), AXES[poles], angleDegrees1=-90, angleDegrees2=90)
 
 
 def union(*shapes: cq.Shape) -> cq.Shape:

@@ -19,9 +19,9 @@ CONTROL_JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "eyes_vers
 CHAIN_JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "left_eye_pan", "right_eye_pan")
 PURCHASED_KINDS = {
     "motor": ("diameter", "length", "shaft_diameter", "shaft_length", "mass"),
-    "gearhead": ("diameter", "length", "shaft_diameter", "shaft_length", "mass"),
-    "encoder": ("diameter", "length", "mass"),
-    "joint_encoder": ("length", "width", "height", "mass"),
+    "gearhead": ("ratio", "diameter", "length", "shaft_diameter", "shaft_length", "mass"),
+    "encoder": ("lines", "diameter", "length", "mass"),
+    "joint_encoder": ("bits", "length", "width", "height", "mass"),
     "bearing": ("bore", "outside", "width", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),

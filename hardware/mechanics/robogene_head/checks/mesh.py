@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Mesh quality of every exported STL: watertight, manifold, consistently wound, no degenerate faces.
 
-Counted directly on the triangle soup (vertices merged by exact coordinates) so the verdict does not
-depend on a mesh library's repair heuristics; trimesh's own is_watertight/is_volume are reported beside."""
+Counted directly on the triangle soup so the verdict does not depend on a mesh library's repair heuristics.
+Vertices are merged on a 1e-4 mm grid: an STL repeats each vertex per triangle, and the same point can be
+written as +1e-17 and -1e-17 by the mesher; anything further apart than the grid stays a separate vertex."""
 from __future__ import annotations
 
 from collections import Counter
@@ -38,7 +39,8 @@ def check_stl(path: Path) -> MeshCheck:
     mesh = trimesh.load(str(path), force="mesh", process=False)
     if mesh.faces.size == 0:
         return MeshCheck(str(path), 0, 0, 0, 0, 0, 0.0, False)
-    verts, inverse = np.unique(mesh.vertices, axis=0, return_inverse=True)
+    grid = np.round(np.asarray(mesh.vertices, dtype=float), 4) + 0.0   # + 0.0 turns -0.0 into 0.0
+    verts, inverse = np.unique(grid, axis=0, return_inverse=True)
     faces = inverse.reshape(-1)[mesh.faces]
     directed = Counter()
     for a, b, c in faces:

@@ -17,7 +17,10 @@ def eye_cup(params: HeadParameters):
     cam = params.purchased(params.root.node("cameras").text("model"))
     w, h, t = cam.num("board_width"), cam.num("board_height"), cam.num("thickness")
     shaft = params.purchased(params.drive("left_eye_pan").text("gearhead")).num("shaft_diameter")
-    cup = geom.cut(geom.sphere(r), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1))
+    # Poles on x, both cut flat: the front face carries the lens, the back face is the print bed side.
+    back = r - 1.5
+    cup = geom.cut(geom.sphere(r, poles="x"), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1),
+                   geom.box(-r - 1, -back, -r - 1, r + 1, -r - 1, r + 1))
     cup = geom.cut(cup,
                    geom.box(-t, 0, -w / 2, w / 2, -h / 2, h / 2),                  # board pocket
                    geom.cyl("x", cam.num("lens_diameter"), -0.5, front + 1),       # lens window

@@ -103,7 +103,8 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     parts.append(purchased.bearing(params, "neck_roll_bearing_rear", key, "neck_pitch_link", loc(-span / 2, 0, zr, ry=-90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     parts.append(Part("neck_roll_motor_mount", "motor_mount_neck_roll", "neck_pitch_link", "machined",
-                      mounts.mount_plate(lw, lw, 4, 8, roll_gear.num("diameter")), loc(-x_out, 0, zr, ry=-90),
+                      mounts.mount_plate(roll_gear.num("diameter"), lw, 4, 8, roll_gear.num("diameter")),
+                      loc(-x_out, 0, zr, ry=-90),
                       material="aluminium-6082", color=ALUMINIUM))
     parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - 4, 0, zr, ry=-90))
     parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(x_out + 1, 0, zr, ry=90)))

@@ -1,0 +1,68 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Keep the generated tables in docs/fabricate.md equal to the package (python -m robogene_head.docs_sync).
+
+The doc holds copies of the BOM and mass tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
+--check (used by the tests) fails when they differ from build/fab, --update rewrites them."""
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[3]
+DOC = REPO / "docs" / "fabricate.md"
+
+
+def mass_table(mass: dict) -> str:
+    head, ref = mass["head_above_yaw"], mass["reference"]
+    diag = [head["inertia_kgmm2"][i][i] for i in range(3)]
+    rows = ["| | this head (above the yaw joint) | reference head | ratio |", "|---|---:|---:|---:|",
+            f"| mass (kg) | {head['mass_kg']:.3f} | {ref['mass_kg']:.4f} | {ref['mass_ratio']:.2f} |"]
+    for k, axis in enumerate("xyz"):
+        rows.append(f"| I{axis}{axis} about the centre of mass (kg mm²) | {diag[k]:.0f} | {ref['inertia_kgmm2_diag'][k]:.1f} | "
+                    f"{ref['inertia_ratio_diag'][k]:.2f} |")
+    rows += ["", "| link | mass (kg) | centre of mass in the link frame (mm) |", "|---|---:|---|"]
+    for link, data in mass["links"].items():
+        rows.append(f"| {link} | {data['mass_kg']:.3f} | " + ", ".join(f"{v:.1f}" for v in data["com_mm"]) + " |")
+    return "\n".join(rows) + "\n"
+
+
+def blocks(fab: Path) -> dict[str, str]:
+    return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
+            "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text()))}
+
+
+def sync(doc_text: str, wanted: dict[str, str]) -> str:
+    for name, body in wanted.items():
+        pattern = re.compile(rf"(<!-- {name}:BEGIN[^>]*-->\n).*?(<!-- {name}:END -->)", re.S)
+        if not pattern.search(doc_text):
+            raise ValueError(f"{DOC}: no <!-- {name}:BEGIN --> ... <!-- {name}:END --> block")
+        doc_text = pattern.sub(lambda m: m.group(1) + body + m.group(2), doc_text)
+    return doc_text
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--fab", type=Path, default=REPO / "build" / "fab")
+    ap.add_argument("--doc", type=Path, default=DOC)
+    mode = ap.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--check", action="store_true")
+    mode.add_argument("--update", action="store_true")
+    args = ap.parse_args(argv)
+    current = args.doc.read_text()
+    wanted = sync(current, blocks(args.fab))
+    if args.update:
+        args.doc.write_text(wanted)
+        return 0
+    if wanted != current:
+        print(f"{args.doc}: generated tables differ from {args.fab}; run python -m robogene_head.docs_sync --update",
+              file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,45 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The numbers a motor-control board configuration needs, derived from the parameter file: joint order and
+limits of the control board, and per physical joint the motor, the total reduction (gearhead x belt) and the
+encoder resolutions. Written to build/fab/config/head-joints.json for the drivers and board configs."""
+from __future__ import annotations
+
+import math
+
+from .params import CHAIN_JOINTS, HeadParameters
+
+BELTED = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}
+
+
+def reduction(params: HeadParameters, joint: str) -> float:
+    drive = params.drive(joint)
+    ratio = params.purchased(drive.text("gearhead")).num("ratio", positive=True)
+    if joint in BELTED:
+        pulleys = params.geometry("pulleys", BELTED[joint])
+        ratio *= pulleys.num("joint_teeth", positive=True) / pulleys.num("motor_teeth", positive=True)
+    return ratio
+
+
+def config(params: HeadParameters) -> dict:
+    joints = []
+    for name in CHAIN_JOINTS:
+        drive, j = params.drive(name), params.joints[name]
+        lines = params.purchased(drive.text("encoder")).num("lines", positive=True)
+        ratio = reduction(params, name)
+        entry = {"name": name, "min_deg": j.lower, "max_deg": j.upper, "motor": drive.text("motor"),
+                 "gearhead": drive.text("gearhead"), "reduction": round(ratio, 6),
+                 "motor_encoder_lines": int(lines),
+                 "motor_counts_per_joint_degree": round(4 * lines * ratio / 360.0, 6)}
+        if drive.has("joint_encoder"):
+            bits = int(params.purchased(drive.text("joint_encoder")).num("bits", positive=True))
+            entry["joint_encoder"] = {"part": drive.text("joint_encoder"), "bits": bits,
+                                      "counts_per_degree": round(2 ** bits / 360.0, 6)}
+        joints.append(entry)
+    return {
+        "source": params.path.name,
+        "control_board": [{"index": i, "name": n, "min_deg": lo, "max_deg": hi}
+                          for i, (n, (lo, hi)) in enumerate(params.control_limits.items())],
+        "eye_coupling": {"left_eye_pan": "version + vergence / 2", "right_eye_pan": "version - vergence / 2"},
+        "joints": joints,
+    }

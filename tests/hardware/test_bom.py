@@ -1,0 +1,124 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""BOM: quantities come from the CAD assembly and the board BOMs, costs add up, and a part the catalog
+lacks (or a malformed board BOM) stops the build with a message naming it."""
+import csv
+import io
+from collections import Counter
+
+import pytest
+import yaml
+
+from robogene_bom import board, build, catalog, collect, render
+from robogene_head.parts import mounts
+
+from conftest import DATA
+
+
+@pytest.fixture(scope="module")
+def cat():
+    return catalog.load()
+
+
+def test_catalog_loads_with_sane_breaks(cat):
+    for item in cat.items.values():
+        assert item.breaks[0][0] == 1
+        assert item.unit_price(1) == item.breaks[0][1]
+        assert item.unit_price(10 ** 6) == item.breaks[-1][1]
+
+
+def test_quantities_are_counted_from_the_assembly(params, assembly, cat):
+    bom = collect.collect(assembly.parts, mounts.belts(params), [], cat)
+    qty = {line.item.key: line.per_head for line in bom.lines}
+    expected = Counter(p.design for p in assembly.parts if p.kind == "purchased")
+    for key, n in expected.items():
+        assert qty[key] == n
+    # Cross-check against the drives in the parameter file: one motor, gearhead and encoder per chain joint.
+    motors = Counter(params.drive(j).text("motor") for j in params.joints)
+    for key, n in motors.items():
+        assert qty[key] == n
+    bearings = Counter()
+    for j in params.joints:
+        d = params.drive(j)
+        if d.has("bearing"):
+            bearings[d.text("bearing")] += int(d.num("bearings"))
+    for key, n in bearings.items():
+        assert qty[key] == n
+    assert qty["raspberrypi-SC0872"] == 2
+    assert {"mxl-belt-56T", "mxl-belt-108T"} <= set(qty)
+
+
+def test_costs_follow_the_price_breaks(params, assembly, cat):
+    bom = collect.collect(assembly.parts, mounts.belts(params), [], cat)
+    one = sum(l.per_head * l.item.unit_price(l.per_head) for l in bom.lines)
+    assert bom.cost_per_head(1) == pytest.approx(one)
+    assert bom.cost_per_head(25) < bom.cost_per_head(1)
+    rows = list(csv.DictReader(io.StringIO(render.to_csv(bom, 25))))
+    assert sum(float(r["line_cost_batch"]) for r in rows) == pytest.approx(bom.cost_per_head(25) * 25, abs=0.05)
+
+
+def test_missing_catalog_part_is_named(params, assembly, tmp_path):
+    data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
+    del data["parts"]["skf-626-2Z"]
+    path = tmp_path / "catalog.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(catalog.CatalogError, match=r"no entry for 'skf-626-2Z' \(needed by CAD part neck_pitch_bearing_left\)"):
+        collect.collect(assembly.parts, mounts.belts(params), [], catalog.load(path))
+
+
+def test_bad_catalog_entry_is_named(tmp_path):
+    data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
+    data["parts"]["skf-626-2Z"]["breaks"] = [[5, 1.0]]
+    path = tmp_path / "catalog.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(catalog.CatalogError, match=r"parts\.skf-626-2Z\.breaks\[0\]: the first break must start at quantity 1"):
+        catalog.load(path)
+
+
+def _catalog_with_board_parts(tmp_path):
+    data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
+    data["parts"].update(yaml.safe_load((DATA / "board-parts.yaml").read_text()))
+    path = tmp_path / "catalog-with-board.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+def test_board_bom_merges_into_the_head_bom(params, assembly, tmp_path):
+    path = _catalog_with_board_parts(tmp_path)
+    cat = catalog.load(path)
+    out = tmp_path / "bom"
+    bom = build.write_package(params, assembly.parts, [DATA / "head-neck-board-bom.csv"], out, batch=5, catalog_path=path)
+    qty = {l.item.key: l.per_head for l in bom.lines}
+    assert qty["ti-DRV8876PWPR"] == 2 and qty["yageo-RC0603FR-0710KL"] == 6
+    rows = list(csv.DictReader((out / "robogene-head-bom.csv").open()))
+    assert {r["mpn"] for r in rows} >= {"DRV8876PWPR", "RC0603FR-0710KL", "2342S012CR"}
+    assert "head-neck-board-bom" in (out / "robogene-head-bom.md").read_text()
+    assert cat.items["ti-DRV8876PWPR"].unit_price(10) == 2.9
+
+
+def test_board_part_missing_from_catalog_is_named(params, assembly, tmp_path):
+    with pytest.raises(catalog.CatalogError, match=r"mpn 'DRV8876PWPR' \(needed by head-neck-board-bom.csv:2, U1,U2\)"):
+        build.write_package(params, assembly.parts, [DATA / "head-neck-board-bom.csv"], tmp_path, batch=5)
+
+
+def test_malformed_board_bom_is_named(tmp_path):
+    path = tmp_path / "b.csv"
+    path.write_text("Reference,Value,Footprint,MPN,Qty\nR1,10k,R_0603,RC0603FR-0710KL,two\n")
+    with pytest.raises(board.BoardBomError, match=r"b.csv:2: Qty 'two' is not a whole number"):
+        board.read(path)
+    path.write_text("Reference,Value,MPN\nR1,10k,X\n")
+    with pytest.raises(board.BoardBomError, match=r"b.csv:1: header lacks column\(s\) Footprint, Qty"):
+        board.read(path)
+
+
+def test_package_bom_files(fab, params, assembly):
+    rows = list(csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open()))
+    qty = {r["key"]: int(r["qty_per_head"]) for r in rows}
+    assert qty == dict(Counter(p.design for p in assembly.parts if p.kind == "purchased")) | \
+        {k: 1 for k, _, _ in mounts.belts(params)}
+    batch = int(params.root.node("bom").num("batch"))
+    assert all(int(r["qty_batch"]) == batch * int(r["qty_per_head"]) for r in rows)
+    md = (fab / "bom" / "robogene-head-bom.md").read_text()
+    assert md.count("\n| ") >= len(rows)
+    html = (fab / "bom" / "robogene-head-bom.html").read_text()
+    assert html.startswith("<!DOCTYPE html>") and html.count("<tr>") > len(rows)

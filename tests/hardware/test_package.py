@@ -1,0 +1,113 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The fabrication package is complete, its manifest checksums hold, its files open in real tools, and a
+second build rebuilds nothing."""
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import FAB, REPO
+
+
+def test_manifest_checksums_match(fab):
+    manifest = json.loads((fab / "manifest.json").read_text())
+    listed = {f["path"] for f in manifest["files"]}
+    on_disk = {str(p.relative_to(fab)) for p in fab.rglob("*") if p.is_file() and p.relative_to(fab).parts[0] != ".cache"
+               and p.name not in ("manifest.json", "SHA256SUMS")}
+    assert listed == on_disk
+    for f in manifest["files"]:
+        assert hashlib.sha256((fab / f["path"]).read_bytes()).hexdigest() == f["sha256"], f["path"]
+    params_sha = hashlib.sha256((REPO / "hardware" / "head-parameters.yaml").read_bytes()).hexdigest()
+    assert manifest["parameters_sha256"] == params_sha, "package is stale: rebuild with make fab"
+
+
+def test_every_part_has_its_files(fab, assembly):
+    designs = {p.design: p for p in assembly.parts}
+    for design, part in designs.items():
+        assert (fab / "step" / f"{design}.step").stat().st_size > 1000, design
+        if part.kind == "printed":
+            assert (fab / "stl" / f"{design}.stl").exists(), design
+        if part.kind == "machined":
+            assert (fab / "drawings" / f"{design}.svg").exists(), design
+    for printable in ("camera_spacer", "cable_clip", "face_plate"):
+        assert (fab / "stl" / f"{printable}.stl").exists()
+    assert (fab / "assembly" / "robogene_head.step").exists()
+
+
+def test_glb_loads_with_every_part(fab, assembly):
+    import trimesh
+    scene = trimesh.load(str(fab / "assembly" / "robogene_head.glb"))
+    assert len(scene.geometry) >= len({p.design for p in assembly.parts}) // 2
+    lo, hi = scene.bounds
+    assert np.all(hi - lo > 100)   # a head-sized scene, in mm
+
+
+def test_freecad_reopened_every_step(fab, assembly):
+    report = json.loads((fab / "reports" / "freecad-step-check.json").read_text())
+    files = {r["file"]: r for r in report["files"]}
+    assert set(files) == {f"{d}.step" for d in {p.design for p in assembly.parts}} | {"robogene_head.step"}
+    assert all(r["ok"] for r in files.values()), [r for r in files.values() if not r["ok"]]
+    assert files["robogene_head.step"]["solids"] == len(assembly.parts)
+
+
+def test_freecad_check_catches_a_wrong_step(fab, tmp_path):
+    """The independent check is real: a STEP whose volume differs from what CadQuery reported fails."""
+    from robogene_head import freecad
+    step = fab / "step" / "neck_upright.step"
+    report = freecad.run([step], {"neck_upright": 1000.0}, [], tmp_path)
+    (entry,) = report["files"]
+    assert not entry["ok"] and "volume" in entry["problem"]
+    broken = tmp_path / "step" / "broken.step"
+    broken.parent.mkdir(parents=True, exist_ok=True)
+    broken.write_text(step.read_text()[:2000])
+    report = freecad.run([broken], {"broken": 1.0}, [], tmp_path)
+    assert not report["files"][0]["ok"]
+
+
+def test_drawings_are_svg_that_rasterise(fab, tmp_path):
+    svgs = sorted((fab / "drawings").glob("*.svg"))
+    assert svgs
+    for svg in svgs:
+        text = svg.read_text()
+        assert "HOLES AND BORES" in text and "class=\"dim\"" in text, svg.name
+        png = tmp_path / (svg.stem + ".png")
+        subprocess.run(["rsvg-convert", "-d", "40", "-p", "40", "-o", str(png), str(svg)], check=True,
+                       capture_output=True, timeout=60)
+        assert png.stat().st_size > 2000, svg.name
+
+
+def test_renders_show_something(fab):
+    import vtk
+    pngs = sorted((fab / "renders").glob("*.png"))
+    assert len(pngs) >= 4
+    for png in pngs:
+        reader = vtk.vtkPNGReader()
+        reader.SetFileName(str(png))
+        reader.Update()
+        image = reader.GetOutput()
+        w, h, _ = image.GetDimensions()
+        from vtk.util.numpy_support import vtk_to_numpy
+        pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[..., :3].astype(int)
+        # not a blank frame: the head covers a good part of the picture and has many colours
+        background = pixels[0, 0]
+        covered = np.mean(np.abs(pixels - background).sum(axis=2) > 60)
+        assert 0.08 < covered < 0.9, (png.name, covered)
+        assert len(np.unique(pixels.reshape(-1, 3), axis=0)) > 500, png.name
+
+
+def test_second_build_rebuilds_nothing(fab, tmp_path):
+    stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and p.suffix in (".step", ".stl", ".svg", ".png", ".glb")}
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "mechanics"), str(REPO / "hardware" / "bom")]))
+    result = subprocess.run([sys.executable, "-m", "robogene_head.fab", "--out", str(fab)], capture_output=True, text=True,
+                            env=env, timeout=900)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert "export" not in result.stderr.replace("exports", "")
+    after = {p: p.stat().st_mtime_ns for p in stamp}
+    assert after == stamp
