@@ -9,7 +9,13 @@ from dataclasses import dataclass
 from ...idl.model import Field, Idl, Interface, Method, Service
 from ..common import (all_sources, environment, identifier, line_comment_header, param_name,
                       vocab_text)
-from ..cpp_interfaces import INCLUDE_DIR, header_name, value_type
+from ..cpp_interfaces import INCLUDE_DIR, cpp_default, header_name, in_param, out_param, value_type
+
+
+def cpp_signature(m: Method, qualified: str = "") -> str:
+    """The method's C++ signature without default arguments (for overrides and definitions)."""
+    params = [in_param(a) for a in m.args] + [out_param(r) for r in m.results]
+    return f"bool {qualified}{m.cpp_name}({', '.join(params)})"
 
 SOURCE_DIR = "runtime/src/dev/generated"
 
@@ -71,13 +77,26 @@ def route_init(r: Route) -> str:
     return f"{{{{{path}}}, {len(r.wire)}, {value}, &{r.handler}}}"
 
 
-def class_name(service: Service) -> str:
-    return "".join(p.capitalize() for p in service.name.split("_")) + "Server"
+def class_name(service: Service, role: str = "Server") -> str:
+    return "".join(p.capitalize() for p in service.name.split("_")) + role
+
+
+def client_methods(service: Service) -> list:
+    """One implementation per C++ signature: methods shared by several interfaces (getAxes,
+    setRefAcceleration...) are one override, sent on the path of the first interface listing it."""
+    seen: dict = {}
+    for iface in service.interfaces:
+        for m in iface.methods:
+            key = (m.cpp_name, tuple((f.type.name, f.per_axis) for f in m.args),
+                   tuple((f.type.name, f.per_axis) for f in m.results))
+            seen.setdefault(key, m)
+    return list(seen.values())
+
 
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+    helpers = dict(client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
     out = {}
@@ -93,4 +112,6 @@ def emit(idl: Idl) -> dict[str, str]:
         ctx = dict(header=header, s=s, max_path=max_path, **helpers)
         out[f"{INCLUDE_DIR}/{s.name}_server.hpp"] = env.get_template("server.hpp.j2").render(**ctx)
         out[f"{SOURCE_DIR}/{s.name}_server.cpp"] = env.get_template("server.cpp.j2").render(**ctx)
+        out[f"{INCLUDE_DIR}/{s.name}_client.hpp"] = env.get_template("client.hpp.j2").render(**ctx)
+        out[f"{SOURCE_DIR}/{s.name}_client.cpp"] = env.get_template("client.cpp.j2").render(**ctx)
     return out

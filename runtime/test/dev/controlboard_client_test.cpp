@@ -1,0 +1,154 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The generated client against the generated server, through the binary wire form: every
+// request and reply is encoded to bytes and decoded again, as a port would carry them.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "robogene/dev/generated/controlboard_client.hpp"
+#include "robogene/dev/generated/controlboard_server.hpp"
+#include "robogene/dev/poly_driver.hpp"
+#include "robogene/dev/simulation_clock.hpp"
+
+using namespace robogene;
+using namespace robogene::dev;
+
+namespace {
+
+struct Remote {
+  PolyDriver device;
+  std::unique_ptr<ControlboardServer> server;
+  std::unique_ptr<ControlboardClient> client;
+  ISimulationClock* clock = nullptr;
+  int exchanges = 0;
+
+  explicit Remote(std::function<Bottle(const Bottle&, Bottle)> tamper = nullptr) {
+    EXPECT_TRUE(device.open(Property::from_command_line(
+        {"--device", "test_motor", "--axes", "3", "--clock", "manual"})));
+    DeviceDriver* driver = nullptr;
+    EXPECT_TRUE(device.view(driver) && device.view(clock));
+    server = std::make_unique<ControlboardServer>(*driver);
+    client = std::make_unique<ControlboardClient>([this, tamper](const Bottle& req, Bottle& reply) {
+      ++exchanges;
+      const Bottle on_server = Bottle::from_bytes(req.to_bytes());
+      Bottle answer = server->respond(on_server);
+      if (tamper) answer = tamper(on_server, answer);
+      reply = Bottle::from_bytes(answer.to_bytes());
+      return true;
+    });
+  }
+};
+
+}  // namespace
+
+// Paper section 3.3 again, with the device on the far side of the RPC protocol (section 3.4).
+TEST(ControlboardClient, PaperSection33ThroughTheNetworkWrappers) {
+  Remote remote;
+  const auto listed = remote.client->check_server();
+  ASSERT_EQ(listed.size(), 4u);  // test_motor: encoders, position, velocity, control mode
+  EXPECT_EQ(listed[1].first, "IPositionControl");
+
+  IPositionControl* ipos = remote.client.get();
+  IVelocityControl* ivel = remote.client.get();
+  EXPECT_TRUE(ipos->setRefAcceleration(0, 100));
+  EXPECT_TRUE(ipos->setRefSpeed(0, 5));
+  EXPECT_TRUE(ipos->positionMove(0, 40));
+  EXPECT_TRUE(ivel->setRefAcceleration(1, 100));
+  EXPECT_TRUE(ivel->velocityMove(1, 5));
+  ASSERT_TRUE(remote.clock->advance(4.0));
+
+  IEncoders* ienc = remote.client.get();
+  std::vector<double> encs;
+  ASSERT_TRUE(ienc->getEncoders(encs));
+  ASSERT_EQ(encs.size(), 3u);
+  EXPECT_NEAR(encs[0], 0.125 + 5 * (4.0 - 0.05), 0.01);
+  EXPECT_NEAR(encs[1], 0.125 + 5 * (4.0 - 0.05), 0.01);
+  EXPECT_EQ(encs[2], 0.0);
+  bool done = true;
+  ASSERT_TRUE(ipos->checkMotionDone(0, done));
+  EXPECT_FALSE(done);
+  std::vector<bool> dones;
+  ASSERT_TRUE(ipos->checkMotionDone(dones));
+  EXPECT_EQ(dones, (std::vector<bool>{false, false, true}));
+  std::int32_t axes = 0;
+  ASSERT_TRUE(ienc->getAxes(axes));
+  EXPECT_EQ(axes, 3);
+}
+
+TEST(ControlboardClient, EnumsVectorsAndRefusals) {
+  Remote remote;
+  IControlMode* imode = remote.client.get();
+  ASSERT_TRUE(imode->setControlModes({ControlMode::idle, ControlMode::velocity, ControlMode::position}));
+  std::vector<ControlMode> modes;
+  ASSERT_TRUE(imode->getControlModes(modes));
+  EXPECT_EQ(modes, (std::vector<ControlMode>{ControlMode::idle, ControlMode::velocity, ControlMode::position}));
+  ControlMode one{};
+  ASSERT_TRUE(imode->getControlMode(1, one));
+  EXPECT_EQ(one, ControlMode::velocity);
+  EXPECT_FALSE(imode->setControlMode(0, ControlMode::torque));  // the device refuses
+  IPositionControl* ipos = remote.client.get();
+  EXPECT_FALSE(ipos->positionMove(7, 1.0));                    // no such axis
+  EXPECT_FALSE(ipos->setRefSpeeds({1.0, 2.0}));                 // 2 values for 3 axes
+  ITorqueControl* itrq = remote.client.get();
+  double t = 0;
+  EXPECT_FALSE(itrq->getTorque(0, t));                          // test_motor has no torque
+}
+
+TEST(ControlboardClient, FingerprintMismatchIsRefusedWithAClearError) {
+  Remote remote([](const Bottle& req, Bottle reply) {
+    if (req.size() == 2 && req[1].is_vocab() && req[1].as_vocab() == vocab("rgif")) {
+      Bottle& list = reply[2].as_list();
+      list[1].as_list()[1] = Value::string("0123456789abcdef");  // IPositionControl changed
+    }
+    return reply;
+  });
+  try {
+    remote.client->check_server();
+    FAIL() << "accepted a server built from another IDL";
+  } catch (const robogene::Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              std::string("controlboard server: interface IPositionControl has fingerprint "
+                          "0123456789abcdef, this client was generated for ") +
+                  IPositionControl::kFingerprint + " (the two sides were built from different IDL)");
+  }
+}
+
+TEST(ControlboardClient, AYarpServerIsCheckedByItsProtocolVersion) {
+  // A YARP 3 controlBoard_nws_yarp answers [fail] to the introspection request.
+  auto yarp_like = [](const char* minor) {
+    return [minor](const Bottle& req, Bottle reply) {
+      if (req.size() == 2 && req[1].as_vocab() == vocab("rgif")) return Bottle::from_text("[fail]");
+      if (req.size() == 2 && req[1].as_vocab() == vocab("prot")) {
+        return Bottle::from_text(std::string("[prot] 1 ") + minor + " 0 [ok]");
+      }
+      return reply;
+    };
+  };
+  Remote same(yarp_like("9"));
+  EXPECT_TRUE(same.client->check_server().empty());
+  Remote older(yarp_like("8"));
+  try {
+    older.client->check_server();
+    FAIL() << "accepted protocol 1.8";
+  } catch (const robogene::Error& e) {
+    EXPECT_EQ(std::string(e.what()), "controlboard server speaks protocol 1.8, this client speaks 1.9");
+  }
+}
+
+TEST(ControlboardClient, MalformedRepliesMakeMethodsFail) {
+  Remote remote([](const Bottle& req, Bottle reply) {
+    if (req.size() >= 2 && req[1].as_vocab() == vocab("enc")) return Bottle::from_text("[is] [enc]");
+    if (req.size() >= 2 && req[1].as_vocab() == vocab("encs")) return Bottle::from_text("[is] [encs] 3.0");
+    if (req.size() >= 2 && req[1].as_vocab() == vocab("pos")) return Bottle::from_text("[nak]");
+    return reply;
+  });
+  IEncoders* ienc = remote.client.get();
+  double v = 0;
+  EXPECT_FALSE(ienc->getEncoder(0, v));   // no value
+  std::vector<double> vs;
+  EXPECT_FALSE(ienc->getEncoders(vs));    // not a list
+  IPositionControl* ipos = remote.client.get();
+  EXPECT_FALSE(ipos->positionMove(0, 1.0));
+}
