@@ -28,6 +28,8 @@ $(FAB)/manifest.json: $(HW_SOURCES) $(BOARD_BOMS) $(STAMPS)/apt-hardware $(STAMP
 	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b))
 
 .PHONY: fab test-hardware
+ALL_TARGETS  += fab
+TEST_TARGETS += test-hardware
 fab: $(FAB)/manifest.json
 
 test-hardware: $(FAB)/manifest.json

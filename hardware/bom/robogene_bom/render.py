@@ -102,6 +102,8 @@ def to_html(bom: Bom, batch: int, title: str) -> str:
     style = ("body{font-family:sans-serif;margin:2em;max-width:75em}table{border-collapse:collapse;width:100%}"
              "td,th{border:1px solid #ccc;padding:.3em .5em;text-align:left}td.n{text-align:right}"
              "thead{background:#eef}tfoot{font-weight:bold}")
-    return (f"<!DOCTYPE html>\n<!-- SPDX-FileCopyrightText: 2026 Robogene contributors -->\n"
-            f"<!-- SPDX-License-Identifier: CERN-OHL-S-2.0 -->\n<html lang=en><head><meta charset=utf-8>"
+    # REUSE-IgnoreStart
+    licence = "<!-- SPDX-FileCopyrightText: 2026 Robogene contributors -->\n<!-- SPDX-License-Identifier: CERN-OHL-S-2.0 -->\n"
+    # REUSE-IgnoreEnd
+    return (f"<!DOCTYPE html>\n{licence}<html lang=en><head><meta charset=utf-8>"
             f"<title>{e(title)}</title><style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
