@@ -94,15 +94,19 @@ void block_shutdown_signals() {
   signal(SIGPIPE, SIG_IGN);
 }
 
+void wait_for_shutdown_signal() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  int sig = 0;
+  while (sigwait(&set, &sig) != 0) {
+  }
+}
+
 void on_shutdown_signal(std::function<void()> handler) {
   std::thread([handler = std::move(handler)] {
-    sigset_t set;
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    int sig = 0;
-    while (sigwait(&set, &sig) != 0) {
-    }
+    wait_for_shutdown_signal();
     handler();
   }).detach();
 }

@@ -48,9 +48,13 @@ net::Endpoint name_server_address(Args& args);
 // YARP's configuration directory ($YARP_CONFIG_HOME, $XDG_CONFIG_HOME/yarp, ~/.config/yarp).
 std::string config_dir();
 
-// Blocks SIGINT and SIGTERM in every thread (call first in main) and runs `handler` once, on a
-// watcher thread, when one arrives.
+// Blocks SIGINT and SIGTERM in every thread (call first in main), so that they are taken only
+// where we wait for them.
 void block_shutdown_signals();
+// Returns when SIGINT or SIGTERM arrives (the caller then shuts down in its own thread).
+void wait_for_shutdown_signal();
+// For commands whose main thread is blocked reading stdin: runs `handler` on a watcher thread
+// when a signal arrives. The handler must end the process (it runs while main is still busy).
 void on_shutdown_signal(std::function<void()> handler);
 
 }  // namespace robogene::cli

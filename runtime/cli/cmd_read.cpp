@@ -3,7 +3,6 @@
 //
 // `robogene read /port [/src]`: opens an input port and prints every bottle it receives in text
 // form, one per line (as `yarp read`). Stops on SIGINT / SIGTERM, unregistering the port.
-#include <condition_variable>
 #include <cstdio>
 #include <mutex>
 
@@ -36,14 +35,6 @@ int cmd_read(Args& args) {
   port.open(name, names);
   std::fprintf(stderr, "Port %s active at %s\n", name.c_str(), port.contact().uri().c_str());
 
-  std::mutex mutex;
-  std::condition_variable stopped;
-  bool stop = false;
-  on_shutdown_signal([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    stop = true;
-    stopped.notify_all();
-  });
   if (!source.empty()) {
     try {
       auto r = network::connect(names, source, name);
@@ -54,8 +45,7 @@ int cmd_read(Args& args) {
       throw;
     }
   }
-  std::unique_lock<std::mutex> lock(mutex);
-  stopped.wait(lock, [&] { return stop; });
+  wait_for_shutdown_signal();
   port.close();
   return 0;
 }

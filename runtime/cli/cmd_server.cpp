@@ -47,14 +47,6 @@ int cmd_server(Args& args) {
   std::mutex mutex;
   std::condition_variable wake;
   bool stopping = false;
-  on_shutdown_signal([&] {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      stopping = true;
-    }
-    wake.notify_all();
-    server.stop();
-  });
   // Periodic sweep, so that stale entries go even when nobody asks about them.
   std::thread sweeper([&] {
     if (sweep_seconds <= 0) return;
@@ -67,11 +59,14 @@ int cmd_server(Args& args) {
       lock.lock();
     }
   });
+  std::thread serving([&] { server.run(); });
 
   std::printf("Name server /root is listening at tcp://%s:%d/ (registrations kept in %s)\n", ip.c_str(), config.port,
               db_path.c_str());
   std::fflush(stdout);
-  server.run();
+  wait_for_shutdown_signal();
+  server.stop();
+  serving.join();
   {
     std::lock_guard<std::mutex> lock(mutex);
     stopping = true;

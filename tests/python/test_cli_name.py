@@ -173,3 +173,19 @@ def test_version_and_help(cli):
     assert "usage: robogene server" in ok(cli("help", "server"))
     assert cli("help", "nonsense").returncode == 2
     assert cli("nonsense").returncode == 2
+
+
+def test_server_stops_cleanly_with_clients_connected(start_name_server, tmp_path):
+    # Regression: a session finishing during shutdown left a dangling pointer that stop() used.
+    for attempt in range(5):
+        server = start_name_server(db=str(tmp_path / f"names{attempt}.db"))
+        clients = []
+        for i in range(8):
+            c = socket.create_connection((server.host, server.port), timeout=5)
+            c.sendall(b"CONNECT idle\r\n" if i % 2 else b"NAME_SERVER query /root\n")
+            clients.append(c)
+        time.sleep(0.05)
+        server.proc.signal(signal.SIGTERM)
+        assert server.proc.wait_exit() == 0, server.proc.describe()
+        for c in clients:
+            c.close()

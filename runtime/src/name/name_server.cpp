@@ -142,8 +142,7 @@ void NameServer::serve(Session& session) {
       session.peer = Peer{in->remote_name(), in->carrier_name()};
       session.connection = in.get();
     }
-    if (stopping_) return;
-    detail::serve_root_messages(root, *in);
+    if (!stopping_) detail::serve_root_messages(root, *in);
   } catch (const Error& e) {
     if (!stopping_) std::fprintf(stderr, "robogene server: %s: %s\n", peer.c_str(), e.what());
   }
