@@ -13,7 +13,8 @@ generate: $(VENV)/.stamp
 check-generated: $(VENV)/.stamp
 	$(CODEGEN) check
 
-test-codegen: $(VENV)/.stamp
+# The Python RPC tests need the compiled core (robogene.Bottle), hence `python`.
+test-codegen: $(VENV)/.stamp python
 	$(PY) -m pytest -q -p no:cacheprovider tests/codegen
 
 ALL_TARGETS  += check-generated

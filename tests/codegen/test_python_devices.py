@@ -1,22 +1,11 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """The Python side of devices: Property, PolyDriver and test_motor, paper section 3.3 included.
-
-robogene.dev is pure Python; it is loaded from the source tree under a bare `robogene` package,
-so these tests need neither the compiled core nor an installed wheel."""
+robogene.dev is pure Python and is loaded from the source tree (see conftest.py)."""
 import math
-import sys
 import time
-import types
-from pathlib import Path
 
 import pytest
-
-ROOT = Path(__file__).resolve().parents[2]
-if "robogene" not in sys.modules:
-    _pkg = types.ModuleType("robogene")
-    _pkg.__path__ = [str(ROOT / "runtime" / "python" / "robogene")]
-    sys.modules["robogene"] = _pkg
 
 from robogene.dev import (ConfigError, ControlMode, DriverFactory, IEncoders,  # noqa: E402
                           IFrameGrabberImage, IPositionControl, ISimulationClock, IVelocityControl,

@@ -48,13 +48,31 @@ def returns(m: Method) -> str:
     return f"Optional[{types[0]}]" if len(types) == 1 else f"Optional[Tuple[{', '.join(types)}]]"
 
 
+def client_methods(service) -> list:
+    """One method per Python name: interfaces sharing a method (getAxes...) share its client."""
+    seen: dict = {}
+    for iface in service.interfaces:
+        for m in iface.methods:
+            seen.setdefault(m.name, m)
+    return list(seen.values())
+
+
+def type_names(fields) -> str:
+    return "(" + "".join(f'"{f.type.name}{"[]" if f.per_axis else ""}", ' for f in fields) + ")"
+
+
+def class_name(service) -> str:
+    return "".join(p.capitalize() for p in service.name.split("_")) + "Client"
+
+
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(py_type=py_type, params=params, returns=returns, described=described,
+    helpers = dict(client_methods=client_methods, type_names=type_names, class_name=class_name,
+                   py_type=py_type, params=params, returns=returns, described=described,
                    vocab_int=vocab_int, identifier=identifier, param_name=param_name, hint=hint)
     header = line_comment_header("#", "BSD-3-Clause", all_sources(idl))
     out = {}
-    for name in ("__init__.py", "types.py", "interfaces.py", "wire.py"):
+    for name in ("__init__.py", "types.py", "interfaces.py", "wire.py", "clients.py"):
         out[f"{PACKAGE_DIR}/{name}"] = env.get_template(f"{name}.j2").render(
             header=header, idl=idl, vocabs=wire_vocabs(idl), **helpers)
     return out

@@ -168,6 +168,19 @@ INTERFACES = {
     }),
 }
 
+# enum -> (wire kind, {member name: value})
+ENUMS = {
+    "CameraFeature": ("int32", {"brightness": 0, "exposure": 1, "sharpness": 2, "white_balance": 3, "hue": 4, "saturation": 5, "gamma": 6, "shutter": 7, "gain": 8, "iris": 9, "focus": 10, "frame_rate": 15}),
+    "ControlMode": ("vocab", {"idle": 7103593, "position": 7565168, "position_direct": 1685286768, "velocity": 7103862, "torque": 1903325044, "current": 1920295785, "pwm": 1836544105, "unknown": 2003529333}),
+    "FeatureMode": ("int32", {"unknown": 0, "manual": 1, "automatic": 2}),
+    "PidType": ("vocab", {"position": 7565168, "velocity": 7103862, "torque": 7434868, "current": 7501155}),
+}
+
+# struct -> ((field, type), ...) in wire order
+STRUCTS = {
+    "Pid": (("kp", "float64"), ("kd", "float64"), ("ki", "float64"), ("max_int", "float64"), ("max_output", "float64"), ("offset", "float64"), ("scale", "float64"), ("stiction_up_val", "float64"), ("stiction_down_val", "float64"), ("kff", "float64"), ),
+}
+
 # service -> (fingerprint, interfaces, protocol (path, reply, version) or None, introspection path)
 SERVICES = {
     "controlboard": ("250cecc3f9e97bd6", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),

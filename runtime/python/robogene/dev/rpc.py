@@ -1,0 +1,287 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""RPC in Python, driven by the generated wire tables (generated/wire.py): a server that answers
+request Bottles by calling a device, and the base of the generated clients. The bottles and the
+reply shapes are YARP 3's, as in the generated C++ (runtime/src/dev/generated/*_server.cpp):
+[ok] / [fail] for commands, [is] <echo> <values> [tsta] <n> <t> [ok] for queries, [nak] for
+requests of fewer than two items. Needs the compiled core (robogene.Bottle)."""
+from __future__ import annotations
+
+import math
+import threading
+import time
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+
+from .. import Bottle, Error, Value, vocab
+from .generated import interfaces as _interfaces
+from .generated import types as _types
+from .generated.wire import ENUMS, INTERFACES, SERVICES, STRUCTS
+
+_INT32 = (-(2 ** 31), 2 ** 31 - 1)
+_OK, _FAIL, _IS, _NAK, _TSTA = (vocab(w) for w in ("ok", "fail", "is", "nak", "tsta"))
+
+
+class _Bad(Exception):
+    """A request item that does not decode as its declared type."""
+
+
+def vocab_of(v: Value) -> int:
+    """The vocab of a vocab or string item (strings truncated to 4 chars, as YARP), else 0."""
+    if v.is_vocab():
+        return v.as_vocab()
+    if v.is_string() and v.as_string():
+        return vocab(v.as_string()[:4])
+    return 0
+
+
+def decode(v: Value, type_name: str) -> Any:
+    if type_name.endswith("[]"):
+        if not v.is_list():
+            raise _Bad
+        return [decode(item, type_name[:-2]) for item in v.as_list()]
+    if type_name in ("joint", "int32"):
+        if not v.is_int() or not _INT32[0] <= v.as_int() <= _INT32[1]:
+            raise _Bad
+        return int(v.as_int())
+    if type_name == "float64":
+        if not v.is_number():
+            raise _Bad
+        return float(v.as_float())
+    if type_name == "bool":
+        if v.is_int() and v.as_int() in (0, 1):
+            return v.as_int() == 1
+        if v.is_vocab() and v.as_vocab() in (0, vocab("1")):
+            return v.as_vocab() != 0
+        raise _Bad
+    if type_name == "string":
+        if not v.is_string():
+            raise _Bad
+        return v.as_string()
+    if type_name == "vocab":
+        code = vocab_of(v)
+        if not code:
+            raise _Bad
+        return code
+    if type_name in ENUMS:
+        kind, members = ENUMS[type_name]
+        raw = decode(v, "int32") if kind == "int32" else vocab_of(v)
+        if raw not in members.values():
+            raise _Bad
+        return getattr(_types, type_name)(raw)
+    if type_name in STRUCTS:
+        fields = STRUCTS[type_name]
+        if not v.is_list() or len(v.as_list()) != len(fields):
+            raise _Bad
+        items = v.as_list()
+        return getattr(_types, type_name)(**{name: decode(items[i], t) for i, (name, t) in enumerate(fields)})
+    raise _Bad
+
+
+def encode(b: Bottle, value: Any, type_name: str) -> None:
+    if type_name.endswith("[]"):
+        inner = b.add_list()
+        for item in value:
+            encode(inner, item, type_name[:-2])
+    elif type_name in ("joint", "int32"):
+        b.add(Value.int32(int(value)))
+    elif type_name == "float64":
+        b.add(Value.float64(float(value)))
+    elif type_name == "bool":
+        b.add(Value.int32(1 if value else 0))
+    elif type_name == "string":
+        b.add(Value.string(str(value)))
+    elif type_name == "vocab":
+        b.add(Value.vocab(int(value)))
+    elif type_name in ENUMS:
+        kind = ENUMS[type_name][0]
+        b.add(Value.vocab(int(value)) if kind == "vocab" else Value.int32(int(value)))
+    elif type_name in STRUCTS:
+        inner = b.add_list()
+        for name, t in STRUCTS[type_name]:
+            encode(inner, getattr(value, name), t)
+    else:
+        raise TypeError(f"cannot encode type {type_name!r}")
+
+
+def _single(word: str) -> Bottle:
+    b = Bottle()
+    b.add(Value.vocab(vocab(word)))
+    return b
+
+
+def _finish(reply: Bottle, stamp: int) -> None:
+    reply.add(Value.vocab(_TSTA))
+    reply.add(Value.int32(stamp))
+    reply.add(Value.float64(time.time()))
+    reply.add(Value.vocab(_OK))
+
+
+class RpcServer:
+    """Answers requests for one service by calling `device` through the interfaces it implements."""
+
+    def __init__(self, service: str, device: Any):
+        if service not in SERVICES:
+            raise LookupError(f"unknown service {service!r} (known: {', '.join(sorted(SERVICES))})")
+        self.service = service
+        self.fingerprint, names, self._protocol, self._introspection = SERVICES[service]
+        self._device = device
+        self._implemented = [n for n in names if isinstance(device, getattr(_interfaces, n))]
+        self._routes: Dict[Tuple[int, ...], Tuple] = {}
+        for iface in names:
+            for method, (wire, echo, args, results) in INTERFACES[iface][1].items():
+                if wire is None:
+                    continue
+                key = tuple(vocab(w) for w in wire)
+                entry = self._routes.setdefault(key, (echo, args, results, []))
+                entry[3].append((iface, method))
+        self._lock = threading.Lock()
+        self._stamps = 0
+
+    def interfaces(self) -> List[Tuple[str, str]]:
+        return [(n, INTERFACES[n][0]) for n in self._implemented]
+
+    def _stamp(self) -> int:
+        with self._lock:
+            n = self._stamps
+            self._stamps += 1
+            return n
+
+    def _matches(self, request: Bottle, path) -> bool:
+        return len(request) >= len(path) and all(vocab_of(request[i]) == vocab(w) for i, w in enumerate(path))
+
+    def respond(self, request: Bottle) -> Bottle:
+        if len(request) < 2:
+            return _single("nak")
+        if self._protocol and len(request) == len(self._protocol[0]) and self._matches(request, self._protocol[0]):
+            reply = _single(self._protocol[1])
+            for n in self._protocol[2]:
+                reply.add(Value.int32(n))
+            reply.add(Value.vocab(_OK))
+            return reply
+        if self._introspection and len(request) == len(self._introspection) and \
+                self._matches(request, self._introspection):
+            reply = _single("is")
+            reply.add(request[len(self._introspection) - 1])
+            listed = reply.add_list()
+            for name, fp in self.interfaces():
+                pair = listed.add_list()
+                pair.add(Value.string(name))
+                pair.add(Value.string(fp))
+            _finish(reply, self._stamp())
+            return reply
+        codes = [vocab_of(request[i]) for i in range(len(request))]
+        # Longest paths first, so that a longer path is never shadowed by a shorter one.
+        for key in sorted(self._routes, key=len, reverse=True):
+            if tuple(codes[:len(key)]) != key:
+                continue
+            echo, args, results, candidates = self._routes[key]
+            stamp = self._stamp() if results else 0
+            reply = self._call(request, len(key), echo, args, results, candidates)
+            if reply is None:
+                return _single("fail")
+            if results:
+                _finish(reply, stamp)
+            else:
+                reply.add(Value.vocab(_OK))
+            return reply
+        self._stamp()  # an unknown query still takes a number, as in YARP
+        return _single("fail")
+
+    def _call(self, request, start, echo, args, results, candidates) -> Optional[Bottle]:
+        if len(request) != start + len(args):
+            return None
+        try:
+            values = [decode(request[start + k], t) for k, t in enumerate(args)]
+        except _Bad:
+            return None
+        target = next(((i, m) for i, m in candidates if i in self._implemented), None)
+        if target is None:
+            return None
+        try:
+            answer = getattr(self._device, target[1])(*values)
+        except Exception:  # a device that raises answers like one that fails
+            return None
+        if not results:
+            return Bottle() if answer is True else None
+        if answer is None:
+            return None
+        answer = answer if len(results) > 1 else (answer,)
+        reply = _single("is")
+        reply.add(Value.vocab(vocab(echo)) if isinstance(echo, str) else request[echo])
+        try:
+            for value, t in zip(answer, results):
+                encode(reply, value, t)
+        except (TypeError, ValueError, AttributeError):
+            return None
+        return reply
+
+
+class RpcClient:
+    """Base of the generated clients: sends requests through `transport(request) -> reply`."""
+
+    SERVICE = ""
+
+    def __init__(self, transport: Callable[[Bottle], Bottle]):
+        self._transport = transport
+
+    def _request(self, wire: Sequence[str], arg_types, args) -> Optional[Bottle]:
+        request = Bottle()
+        for w in wire:
+            request.add(Value.vocab(vocab(w)))
+        try:
+            for value, t in zip(args, arg_types):
+                encode(request, value, t)
+        except (TypeError, ValueError, AttributeError):
+            return None
+        return self._transport(request)
+
+    def _command(self, wire, arg_types, args) -> bool:
+        reply = self._request(wire, arg_types, args)
+        return reply is not None and len(reply) >= 1 and vocab_of(reply[0]) == _OK
+
+    def _query(self, wire, arg_types, args, result_types):
+        reply = self._request(wire, arg_types, args)
+        if reply is None or len(reply) < 2 + len(result_types) or vocab_of(reply[0]) != _IS:
+            return None
+        try:
+            values = [decode(reply[2 + k], t) for k, t in enumerate(result_types)]
+        except _Bad:
+            return None
+        return values[0] if len(values) == 1 else tuple(values)
+
+    def check_server(self) -> List[Tuple[str, str]]:
+        """The (name, fingerprint) of the server's interfaces; raises robogene.Error naming an
+        interface built from different IDL, or a YARP 3 server of another protocol version."""
+        fingerprint, names, protocol, introspection = SERVICES[self.SERVICE]
+        if introspection:
+            reply = self._transport(_path(introspection))
+            if len(reply) >= 3 and vocab_of(reply[0]) == _IS and reply[2].is_list():
+                theirs = []
+                for item in reply[2].as_list():
+                    pair = item.as_list() if item.is_list() else None
+                    if pair is None or len(pair) != 2 or not pair[0].is_string() or not pair[1].is_string():
+                        raise Error(f"{self.SERVICE} server: malformed interface entry {item.to_text()}")
+                    name, fp = pair[0].as_string(), pair[1].as_string()
+                    if name in names and INTERFACES[name][0] != fp:
+                        raise Error(f"{self.SERVICE} server: interface {name} has fingerprint {fp}, this "
+                                    f"client was generated for {INTERFACES[name][0]} (the two sides were "
+                                    "built from different IDL)")
+                    theirs.append((name, fp))
+                return theirs
+        if not protocol:
+            raise Error(f"{self.SERVICE} server does not list its interfaces")
+        reply = self._transport(_path(protocol[0]))
+        if len(reply) < 3 or vocab_of(reply[0]) != vocab(protocol[1]) or not reply[1].is_int() \
+                or not reply[2].is_int():
+            raise Error(f"{self.SERVICE} server: unexpected reply to the protocol request: {reply.to_text()}")
+        if (reply[1].as_int(), reply[2].as_int()) != tuple(protocol[2][:2]):
+            raise Error(f"{self.SERVICE} server speaks protocol {reply[1].as_int()}.{reply[2].as_int()}, "
+                        f"this client speaks {protocol[2][0]}.{protocol[2][1]}")
+        return []
+
+
+def _path(words: Sequence[str]) -> Bottle:
+    b = Bottle()
+    for w in words:
+        b.add(Value.vocab(vocab(w)))
+    return b
