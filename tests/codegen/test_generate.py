@@ -25,6 +25,8 @@ def make_copy(tmp_path: Path) -> Path:
         if (ROOT / d).is_dir():
             shutil.copytree(ROOT / d, root / d, ignore=shutil.ignore_patterns("__pycache__"))
     shutil.copytree(ROOT / "runtime" / "include", root / "runtime" / "include", dirs_exist_ok=True)
+    shutil.copytree(ROOT / "runtime" / "src" / "bottle", root / "runtime" / "src" / "bottle")
+    shutil.copy(ROOT / "runtime" / "src" / "dev" / "rpc_codec.cpp", root / "runtime" / "src" / "dev")
     shutil.copytree(ROOT / "runtime" / "python" / "robogene" / "dev",
                     root / "runtime" / "python" / "robogene" / "dev", dirs_exist_ok=True,
                     ignore=shutil.ignore_patterns("__pycache__", "generated"))
@@ -160,3 +162,94 @@ def test_generated_cpp_headers_compile_cleanly(tmp_path):
                          "-fsyntax-only", "-I", str(ROOT / "runtime/include"), str(src)],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
+
+
+RPC_MAIN = textwrap.dedent("""
+    #include <cstdio>
+    #include "robogene/dev/generated/controlboard_client.hpp"
+    #include "robogene/dev/generated/controlboard_server.hpp"
+    using namespace robogene;
+    using namespace robogene::dev;
+    struct Board : DeviceDriver, IEncoders {
+      bool open(const Searchable&) override { return true; }
+      bool close() override { return true; }
+      bool getAxes(std::int32_t& n) override { n = 3; return true; }
+      bool getEncoder(int, double& v) override { v = 0; return true; }
+      bool getEncoders(std::vector<double>& vs) override { vs.assign(3, 0.0); return true; }
+      bool getEncoderSpeed(int, double&) override { return false; }
+      bool getEncoderSpeeds(std::vector<double>&) override { return false; }
+      bool getEncoderAcceleration(int, double&) override { return false; }
+      bool getEncoderAccelerations(std::vector<double>&) override { return false; }
+      bool resetEncoder(int) override { return false; }
+      bool resetEncoders() override { return false; }
+      bool setEncoder(int, double) override { return false; }
+      bool setEncoders(const std::vector<double>&) override { return false; }
+      bool getEncoderTemperature(int j, double& t) override {
+        if (j < 0 || j > 2) return false;
+        t = 20.0 + j;
+        return true;
+      }
+    };
+    int main() {
+      Board board;
+      ControlboardServer server(board);
+      ControlboardClient client([&](const Bottle& req, Bottle& reply) {
+        reply = Bottle::from_bytes(server.respond(Bottle::from_bytes(req.to_bytes())).to_bytes());
+        return true;
+      });
+      double t = 0;
+      if (!client.getEncoderTemperature(2, t) || t != 22.0) return 1;
+      if (client.getEncoderTemperature(7, t)) return 2;
+      std::printf("%s\\n", server.respond(Bottle::from_text("[get] [etmp] 1")).to_text().c_str());
+      return 0;
+    }
+""")
+
+
+def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path):
+    """C++ client -> bytes -> C++ server -> device, and the same in Python, for a new method."""
+    root = make_copy(tmp_path)
+    idl = root / "interfaces/idl/iencoders.yaml"
+    idl.write_text(idl.read_text() + textwrap.indent(NEW_METHOD, "  "))
+    assert main(["generate", "--root", str(root)]) == 0
+
+    src = tmp_path / "rpc_main.cpp"
+    src.write_text(RPC_MAIN)
+    sources = [str(p) for p in sorted((root / "runtime/src/bottle").glob("*.cpp"))]
+    sources += [str(root / "runtime/src/dev/rpc_codec.cpp"),
+                str(root / "runtime/src/dev/generated/controlboard_server.cpp"),
+                str(root / "runtime/src/dev/generated/controlboard_client.cpp"), str(src)]
+    exe = tmp_path / "rpc_main"
+    cc = subprocess.run(["g++", "-std=c++17", "-O0", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
+                         "-I", str(root / "runtime/include"), *sources, "-o", str(exe)],
+                        capture_output=True, text=True)
+    assert cc.returncode == 0, cc.stderr
+    run = subprocess.run([str(exe)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert run.stdout.startswith("[is] [etmp] 21.0 [tsta] ")
+
+    pytest.importorskip("robogene._core", reason="needs the compiled core (make python)")
+    code = textwrap.dedent("""
+        import sys
+        import robogene
+        robogene.__path__.insert(0, sys.argv[1])
+        from robogene import Bottle
+        from robogene.dev.generated import IEncoders
+        from robogene.dev.generated.clients import ControlboardClient
+        from robogene.dev.rpc import RpcServer
+
+        class Board(IEncoders):
+            def getEncoderTemperature(self, j):
+                return 20.0 + j if 0 <= j < 3 else None
+        for name in IEncoders.__abstractmethods__ - {"getEncoderTemperature"}:
+            setattr(Board, name, lambda self, *a: None)
+        Board.__abstractmethods__ = frozenset()
+        server = RpcServer("controlboard", Board())
+        client = ControlboardClient(lambda req: Bottle.from_bytes(server.respond(Bottle.from_bytes(req.to_bytes())).to_bytes()))
+        assert client.getEncoderTemperature(2) == 22.0
+        assert client.getEncoderTemperature(7) is None
+        print("ok")
+    """)
+    out = subprocess.run([sys.executable, "-c", code, str(root / "runtime/python/robogene")],
+                         capture_output=True, text=True)
+    assert out.stdout.strip() == "ok", out.stderr

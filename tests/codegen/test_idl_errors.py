@@ -301,3 +301,16 @@ def test_reserved_words_cannot_name_things(tmp_path):
     err = one_error(tmp_path, {"t.yaml": TYPES.replace("name: idle", "name: auto")})
     assert err == (f"{tmp_path}/t.yaml:8:18: error: 'auto' is a reserved word in C++ or Python "
                    "and cannot name anything in the IDL")
+
+
+def test_echo_vocab_must_be_a_vocab(tmp_path):
+    err = one_error(tmp_path, {"i.yaml": iface("""\
+        - name: getThing
+          doc: Get.
+          wire: [get, thng]
+          echo: things
+          results:
+            - {name: v, type: float64}
+        """)})
+    assert err == (f"{tmp_path}/i.yaml:9:11: error: vocab 'things' must be 1 to 4 printable ASCII "
+                   "characters; YARP would truncate it to [thin]")
