@@ -47,4 +47,14 @@ Bottle InboundMessage::take_bottle(const DecodeLimits& limits) {
   return b;
 }
 
+void InboundMessage::recycle(Bottle& b) {
+  for (Value& v : b) {
+    if (v.is_list()) {
+      recycle(v.as_list());
+    } else if (v.is_blob() && v.as_blob().capacity() >= 64 * 1024 && spare_blobs.size() < 8) {
+      spare_blobs.push_back(std::move(v.as_blob()));
+    }
+  }
+}
+
 }  // namespace robogene::carrier

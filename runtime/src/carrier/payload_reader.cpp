@@ -64,7 +64,7 @@ class Walker {
         auto n = static_cast<std::size_t>(len);
         if (n >= kDetachBlobsFrom) {
           put_int32(m_.payload.data() + len_at, 0);
-          std::vector<std::uint8_t> body(n);
+          std::vector<std::uint8_t> body = buffer(n);
           in_.read_exact(body.data(), n);
           left_ -= n;
           m_.detached_blobs.push_back(std::move(body));
@@ -78,6 +78,19 @@ class Walker {
       default:
         throw NotWalkable{};
     }
+  }
+
+  // A buffer of n bytes, from the spares when one is big enough (shrinking never clears memory).
+  std::vector<std::uint8_t> buffer(std::size_t n) {
+    for (auto it = m_.spare_blobs.begin(); it != m_.spare_blobs.end(); ++it) {
+      if (it->size() >= n) {
+        std::vector<std::uint8_t> v = std::move(*it);
+        m_.spare_blobs.erase(it);
+        v.resize(n);
+        return v;
+      }
+    }
+    return std::vector<std::uint8_t>(n);
   }
 
   std::int32_t int32() {

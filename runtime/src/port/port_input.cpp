@@ -150,6 +150,7 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
       deliver(data, info, msg.reply_expected ? &reply : nullptr);
       if (msg.reply_expected && (!reply.empty() || !c.is_text())) c.reply(reply);
       c.finish();
+      msg.recycle(data);  // the reader is done with it: keep its image buffers for the next one
       return true;
     }
     case 'a': {

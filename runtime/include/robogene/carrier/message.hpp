@@ -27,11 +27,16 @@ struct InboundMessage {
   // blobs (counted depth-first from 0) they are. Saves a copy of every image.
   std::vector<std::vector<std::uint8_t>> detached_blobs;
   std::vector<std::size_t> detached_blob_ordinals;
+  // Buffers handed back by the owner once it is done with a Bottle (see recycle()), reused for
+  // the next detached blobs so that a stream of images allocates and clears no new memory.
+  std::vector<std::vector<std::uint8_t>> spare_blobs;
 
   // The payload as a Bottle, decoded from whichever form it has; throws ParseError.
   Bottle bottle(const DecodeLimits& limits = {}) const;
   // The same, moving detached blob bodies into the Bottle (no copy); the message is spent.
   Bottle take_bottle(const DecodeLimits& limits = {});
+  // Takes back the large blob buffers of a Bottle that is no longer needed.
+  void recycle(Bottle& b);
   std::string payload_text() const { return std::string(payload.begin(), payload.end()); }
 };
 
