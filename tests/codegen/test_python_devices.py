@@ -147,6 +147,8 @@ def test_property_from_ini_command_line_and_dict():
     assert c.find_group("GENERAL").get_int("Joints", 0, 0, 9) == 4
     assert c.find("pos") == [1, 2.5]
     assert c.origin("axes") == "command line argument 3"
+    n = Property.from_ini("hex 0x1F\noct 010\nnotoct 09\nneg -5\nf 1e3\n", "n.ini")
+    assert [n.find(k) for k in ("hex", "oct", "notoct", "neg", "f")] == [31, 8, "09", -5, 1000.0]
 
 
 @pytest.mark.parametrize("text,message", [

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "robogene/dev/poly_driver.hpp"
 
+#include <exception>
+
 namespace robogene::dev {
 
 bool PolyDriver::open(const std::string& device) {
@@ -36,6 +38,9 @@ bool PolyDriver::open_with(const std::string& name, const Searchable& config) {
     return true;
   } catch (const Error& e) {
     error_ = "device '" + name + "': " + e.what();
+    return false;
+  } catch (const std::exception& e) {  // a driver's own failure, reported rather than thrown on
+    error_ = "device '" + name + "' failed while opening: " + e.what();
     return false;
   }
 }

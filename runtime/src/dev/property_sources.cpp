@@ -49,6 +49,8 @@ Bottle parse_values(std::string_view text, const std::string& where, std::size_t
     const std::string prefix = "column " + std::to_string(e.position()) + ": ";
     if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
     throw ConfigError(where + ":" + std::to_string(column + e.position() - 1) + ": " + what);
+  } catch (const Error& e) {
+    throw ConfigError(where + ":" + std::to_string(column) + ": " + e.what());
   }
 }
 

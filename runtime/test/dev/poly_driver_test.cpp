@@ -102,3 +102,14 @@ TEST(PolyDriver, OwnsTheDeviceLifecycle) {
   EXPECT_FALSE(refused.open(Property::from_command_line({"--device", "counting_device", "--refuse"})));
   EXPECT_EQ(refused.last_error(), "device 'counting_device' failed to open");
 }
+
+TEST(PolyDriver, ADriverThatThrowsIsReportedNotPropagated) {
+  struct Throwing : DeviceDriver {
+    bool open(const Searchable&) override { throw std::runtime_error("serial port /dev/ttyX busy"); }
+    bool close() override { return true; }
+  };
+  DriverFactory::instance().add("throwing_device", "test", [] { return std::make_unique<Throwing>(); });
+  PolyDriver device;
+  EXPECT_FALSE(device.open("throwing_device"));
+  EXPECT_EQ(device.last_error(), "device 'throwing_device' failed while opening: serial port /dev/ttyX busy");
+}

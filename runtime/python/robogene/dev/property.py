@@ -20,7 +20,10 @@ class ConfigError(ValueError):
 
 def _word(text: str) -> Any:
     if _INT.match(text):
-        return int(text, 0) if not re.match(r"^[+-]?0\d", text) else int(text, 8)
+        try:  # a leading 0 means octal, as in YARP (strtoll base 0); 09 is then not a number
+            return int(text, 0) if not re.match(r"^[+-]?0\d", text) else int(text, 8)
+        except ValueError:
+            return text
     if _FLOAT.match(text):
         return float(text)
     if text in ("true", "false"):
