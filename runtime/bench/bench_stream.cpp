@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
@@ -72,6 +73,11 @@ double ours_mb_per_s(int frames, const char* carrier, const Bottle& img) {
   for (int i = 0; i < frames; ++i) w.write(img);
   while (got < frames) std::this_thread::yield();
   double secs = bench::micros(bench::Clock::now() - start) / 1e6;
+  if (bytes != static_cast<std::size_t>(frames) * 921600u) {
+    std::fprintf(stderr, "%s: received %zu pixel bytes, expected %zu\n", carrier, bytes.load(),
+                 static_cast<std::size_t>(frames) * 921600u);
+    std::exit(1);
+  }
   return frames * static_cast<double>(img.encoded_size()) / secs / 1e6;
 }
 
