@@ -152,7 +152,7 @@ TEST_F(PortRobustness, TruncatedHandshakeAndSilentPeerTimeOut) {
 
 TEST_F(PortRobustness, StalledReaderIsDroppedWithoutStoppingOtherOutputs) {
   PortOptions o;
-  o.send_timeout = 300ms;
+  o.send_timeout = 1000ms;  // generous: a loaded CI machine must not drop the good reader
   PortTable t;
   Port w(o), good;
   open_local(w, "/w", t);
@@ -166,7 +166,7 @@ TEST_F(PortRobustness, StalledReaderIsDroppedWithoutStoppingOtherOutputs) {
     ASSERT_TRUE(s.has_value());
     read_n(*s, 15);
     send(*s, hex("59 41 13 27 00 00 52 50"));
-    std::this_thread::sleep_for(3s);
+    std::this_thread::sleep_for(6s);
   });
   w.add_output(Contact{"/stall", "tcp", "127.0.0.1", stall.local().port});
   w.add_output("/good");
@@ -175,7 +175,7 @@ TEST_F(PortRobustness, StalledReaderIsDroppedWithoutStoppingOtherOutputs) {
   auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < 10; ++i) w.write(img);
   auto took = std::chrono::steady_clock::now() - start;
-  EXPECT_LT(took, 3s);
+  EXPECT_LT(took, 5s);  // one send timeout, not one per message
   EXPECT_EQ(w.output_names(), std::vector<std::string>{"/good"});
   EXPECT_EQ(received.load(), 10);
   staller.join();
