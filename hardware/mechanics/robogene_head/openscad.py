@@ -25,7 +25,9 @@ def defines(params: HeadParameters) -> dict[str, dict[str, float]]:
                           "lens_d": cam.num("lens_diameter")},
         "cable_clip": {},
         "face_plate": {"width": 2 * head.node("floor").num("half_width"), "height": head.node("side_plate").num("height"),
-                       "eye_y": tilt[2], "baseline": params.baseline},
+                       "eye_y": tilt[2], "baseline": params.baseline,
+                       "edge_inset": head.node("side_plate").num("thickness") / 2,
+                       "screw_z": list(head.vec("face_screw_z", 2))},
     }
 
 
@@ -33,11 +35,17 @@ def sources() -> list[Path]:
     return sorted(SCAD_DIR.glob("*.scad"))
 
 
-def render_stl(scad: Path, values: dict[str, float], out: Path, timeout: float = 300) -> None:
+def _scad_value(value) -> str:
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_scad_value(v) for v in value) + "]"
+    return f"{value:g}"
+
+
+def render_stl(scad: Path, values: dict, out: Path, timeout: float = 300) -> None:
     out.parent.mkdir(parents=True, exist_ok=True)
     cmd = ["openscad", "--hardwarnings", "-o", str(out)]
     for key, value in sorted(values.items()):
-        cmd += ["-D", f"{key}={value:g}"]
+        cmd += ["-D", f"{key}={_scad_value(value)}"]
     cmd.append(str(scad))
     env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
     with tempfile.TemporaryDirectory() as home:

@@ -12,7 +12,8 @@ eye_y = 82;           // eye height above the head floor
 baseline = 68;
 eye_w = 46;           // opening width, covers the pan range at the plate's distance from the eyes
 eye_h = 36;           // opening height, covers the tilt range
-edge_inset = 3;       // screw holes on the side plates' 6 mm front edges
+edge_inset = 3;       // screw holes on the middle of the side plates' front edges
+screw_z = [20, 92];   // their heights above the head floor
 screw_d = 3.4;
 corner_r = 10;
 $fn = 64;
@@ -26,5 +27,5 @@ linear_extrude(height = thickness) difference() {
     for (s = [-1, 1]) translate([s * baseline / 2, eye_y]) scale([eye_w / eye_h, 1]) circle(d = eye_h);
     // mouth grille: ventilation for the motors
     for (k = [-3 : 3]) translate([k * 9, 28]) rounded_rect(5, 16, 2.4);
-    for (sx = [-1, 1], yy = [20, 92]) translate([sx * (width / 2 - edge_inset), yy]) circle(d = screw_d);
+    for (sx = [-1, 1], yy = screw_z) translate([sx * (width / 2 - edge_inset), yy]) circle(d = screw_d);
 }

@@ -29,9 +29,12 @@ def build(params: HeadParameters) -> list[Part]:
                      geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
                      geom.cyl("z", 8, -ft - 1, 1, (ym, 0)))
     # Left side plate in its design frame; the right plate is its mirror image.
+    face_z = h.vec("face_screw_z", 2)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
                     geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
-                    geom.cyl("y", 8, inner - 1, hw + 1, (tmx, tmz)))
+                    geom.cyl("y", 8, inner - 1, hw + 1, (tmx, tmz)),
+                    # M3 tapped holes (2.5 mm tap drill, 8 deep) for the OpenSCAD face plate
+                    *[geom.cyl("x", 2.5, sx1 - 8, sx1 + 1, (inner + st / 2, z)) for z in face_z])
     side = geom.single_solid(side, "side plate")
     side_right = side.mirror("XZ")
     back = geom.box(x0, x0 + bt, -inner, inner, 0, bh)
