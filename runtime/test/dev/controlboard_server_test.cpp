@@ -14,6 +14,7 @@
 
 #include "robogene/dev/generated/controlboard_server.hpp"
 #include "robogene/dev/generated/grabber_server.hpp"
+#include "robogene/dev/image_codec.hpp"
 #include "robogene/dev/poly_driver.hpp"
 #include "robogene/dev/simulation_clock.hpp"
 
@@ -211,4 +212,31 @@ TEST(GrabberServer, ControlsAndSizeByRpc) {
   EXPECT_EQ(ask("[fgc] [set] [mode] 7 2"), "[ok]");       // shutter: auto
   EXPECT_EQ(ask("[fgc] [get] [mode] 7").substr(0, 18), "[is] [mode] 2 [tst");
   EXPECT_EQ(ask("[get] [prot]"), "[fail]");  // the grabber service declares no protocol
+}
+
+// state:o carries the encoders as a YARP Vector: a homogeneous float64 list (capture sniff_state).
+TEST(ControlboardServer, StatePortMessageIsTheEncoderVector) {
+  Board board;
+  EXPECT_EQ(board.ask("[set] [encs] (1.0 2.0 3.0 4.0)"), "[ok]");
+  Bottle state;
+  ASSERT_TRUE(board.server->publish_state(state));
+  EXPECT_EQ(hex(state.to_bytes()),
+            "0a01000004000000000000000000f03f000000000000004000000000000008400000000000001040");
+}
+
+TEST(GrabberServer, ImageStreamMessageIsAYarpImageOfTheCurrentFrame) {
+  PolyDriver device(Property::from_command_line(
+      {"--device", "fake_grabber", "--width", "16", "--height", "8", "--clock", "manual"}));
+  DeviceDriver* driver = nullptr;
+  IFrameGrabberImage* img = nullptr;
+  ASSERT_TRUE(device.view(driver) && device.view(img));
+  GrabberServer server(*driver);
+  Bottle message;
+  ASSERT_TRUE(server.publish_image(message));
+  EXPECT_EQ(message[2].to_text(), "(3 384 65544 16 8)");
+  ImageRgb sent, local;
+  std::string error;
+  ASSERT_TRUE(decode_image(message, sent, error)) << error;
+  ASSERT_TRUE(img->getImage(local));  // same simulated time: the same frame
+  EXPECT_EQ(sent.pixels, local.pixels);
 }

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from ...idl.model import Field, Idl, Interface, Method, Service
 from ..common import (all_sources, environment, identifier, line_comment_header, param_name,
                       vocab_text)
-from ..cpp_interfaces import INCLUDE_DIR, cpp_default, header_name, in_param, out_param, value_type
+from ..cpp_interfaces import INCLUDE_DIR, cpp_type, header_name, in_param, out_param, value_type
 
 
 def cpp_signature(m: Method, qualified: str = "") -> str:
@@ -96,7 +96,7 @@ def client_methods(service: Service) -> list:
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+    helpers = dict(cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
     out = {}

@@ -9,6 +9,7 @@
 #include <exception>
 
 #include "robogene/dev/generated/wire_types.hpp"
+#include "robogene/dev/image_codec.hpp"
 #include "robogene/dev/rpc_codec.hpp"
 
 namespace robogene::dev {
@@ -1120,6 +1121,14 @@ std::vector<std::pair<std::string, std::string>> ControlboardServer::interfaces(
   if (ifaces_.ipidcontrol) out.emplace_back(IPidControl::kInterfaceName, IPidControl::kFingerprint);
   if (ifaces_.icontrolmode) out.emplace_back(IControlMode::kInterfaceName, IControlMode::kFingerprint);
   return out;
+}
+
+bool ControlboardServer::publish_state(Bottle& out) {
+  std::vector<double> vs{};
+  if (!ifaces_.iencoders || !ifaces_.iencoders->getEncoders(vs)) return false;
+  out.clear();  // the list is the message itself, as YARP sends a Vector
+  for (const auto& item : vs) write(out, static_cast<double>(item));
+  return true;
 }
 
 Bottle ControlboardServer::respond(const Bottle& req) {

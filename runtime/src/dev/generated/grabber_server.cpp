@@ -9,6 +9,7 @@
 #include <exception>
 
 #include "robogene/dev/generated/wire_types.hpp"
+#include "robogene/dev/image_codec.hpp"
 #include "robogene/dev/rpc_codec.hpp"
 
 namespace robogene::dev {
@@ -215,6 +216,13 @@ std::vector<std::pair<std::string, std::string>> GrabberServer::interfaces() con
   if (ifaces_.iframegrabberimage) out.emplace_back(IFrameGrabberImage::kInterfaceName, IFrameGrabberImage::kFingerprint);
   if (ifaces_.iframegrabbercontrols) out.emplace_back(IFrameGrabberControls::kInterfaceName, IFrameGrabberControls::kFingerprint);
   return out;
+}
+
+bool GrabberServer::publish_image(Bottle& out) {
+  ImageRgb image{};
+  if (!ifaces_.iframegrabberimage || !ifaces_.iframegrabberimage->getImage(image)) return false;
+  out = encode_image(image);
+  return true;
 }
 
 Bottle GrabberServer::respond(const Bottle& req) {

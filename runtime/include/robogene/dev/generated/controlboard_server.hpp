@@ -40,6 +40,9 @@ class ControlboardServer {
   explicit ControlboardServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);
+  // What <name>/state:o publishes every 0.02 s: Joint positions as a YARP Vector (a float64 list), with a Stamp envelope.
+  // False when the device cannot provide it (then nothing is published).
+  bool publish_state(Bottle& out);
   // (name fingerprint) of each interface the device implements, in the service's order.
   std::vector<std::pair<std::string, std::string>> interfaces() const;
 

@@ -36,6 +36,9 @@ class GrabberServer {
   explicit GrabberServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);
+  // What <name>/image:o publishes every 0.033 s: Each new frame as a YARP 3 image ([mat] [rgb] header and pixel blob).
+  // False when the device cannot provide it (then nothing is published).
+  bool publish_image(Bottle& out);
   // (name fingerprint) of each interface the device implements, in the service's order.
   std::vector<std::pair<std::string, std::string>> interfaces() const;
 
