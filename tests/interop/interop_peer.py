@@ -25,6 +25,14 @@ def yarp_tool(name: str) -> str:
                             "build it with `make yarp-peer`")
 
 
+def yarpdev() -> str:
+    """yarpdev-static: the peer's yarpdev with its static devices registered (tests/interop/yarpdev_static)."""
+    path = yarp_peer_venv() / "bin" / "yarpdev-static"
+    if not os.access(path, os.X_OK):
+        raise FileNotFoundError(f"{path} missing: build the YARP peer with `make yarp-peer`")
+    return str(path)
+
+
 def yarp_python() -> str:
     path = yarp_peer_venv() / "bin" / "python"
     if not os.access(path, os.X_OK):

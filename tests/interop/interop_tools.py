@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Sequence
 
 import interop_net as net_
-from interop_peer import PrivateNetwork, robogene_bin, yarp_python, yarp_tool
+from interop_peer import PrivateNetwork, robogene_bin, yarp_python, yarp_tool, yarpdev
 from interop_procs import Proc, ProcessGroup, run
 
 START_TIMEOUT = 15.0
@@ -71,7 +71,7 @@ class YarpTools:
         return proc
 
     def dev(self, *args: str) -> Proc:
-        return self._start("yarpdev", [yarp_tool("yarpdev"), *args])
+        return self._start("yarpdev", [yarpdev(), *args])
 
     def cmd(self, *args: str, timeout: float = 20.0, stdin: str = "") -> subprocess.CompletedProcess:
         return run([yarp_tool("yarp"), *args], self.net.env, timeout, stdin)

@@ -2,12 +2,13 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 #
-# Build a real YARP 3 peer (yarp-middleware 3.5.0 from PyPI: C++ libraries, the yarp/yarpserver/yarpdev
-# tools and the SWIG `yarp` Python module) into .yarp-venv, for the interoperability tests.
-# Idempotent: a stamp inside the venv records what was built, so a second run returns at once. The
-# wheel is kept in a cache keyed by this script and the pinned build requirements, so rebuilding the
-# venv on the same machine takes seconds instead of ~25 minutes (pip's own wheel cache is keyed by
-# the sdist URL only and would hand back a wheel built with other settings).
+# Build a real YARP 3 peer (yarp-middleware 3.5.0 from PyPI: C++ libraries, the yarp/yarpserver tools
+# and the SWIG `yarp` Python module) into .yarp-venv for the interoperability tests, plus
+# bin/yarpdev-static, a yarpdev that can see the statically linked devices (see its main.cpp).
+# Idempotent: a stamp records what was built, so a second run returns at once. The wheel is kept in
+# a cache keyed by the build settings below and the pinned build requirements, so rebuilding the venv
+# on the same machine takes seconds instead of ~25 minutes (pip's own wheel cache is keyed by the
+# sdist URL only and would hand back a wheel built with other settings).
 # Usage: tools/setup/yarp-peer.sh [VENV_DIR]      (default: <repo>/.yarp-venv)
 set -euo pipefail
 
@@ -16,11 +17,24 @@ venv=${1:-$root/.yarp-venv}
 version=3.5.0
 python=${PYTHON3:-python3}
 constraints=$root/tools/setup/requirements-yarp-peer.txt
-key=$(cat "${BASH_SOURCE[0]}" "$constraints" | sha256sum | cut -c1-16)
-stamp=$venv/.robogene-yarp-peer
-wheels=${YARP_PEER_WHEEL_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/robogene/yarp-peer/$key}
+launcher=$root/tests/interop/yarpdev_static
 
-if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$key" ] && [ -x "$venv/bin/yarp" ]; then
+# yarp-middleware 3.5.0 predates the cmake and gcc on this platform: pip's build env pulls a cmake
+# that refuses the project's old cmake_minimum_required, and gcc 12 no longer includes these
+# standard headers transitively, so several YARP sources fail to compile without them.
+includes=""
+for h in utility cstdint limits iterator algorithm functional memory string array cmath; do
+  includes="$includes -include $h"
+done
+# fakeMotionControl is off by default in 3.5.0; the tests drive it behind controlboardwrapper2.
+devices="ENABLE_yarpmod_fakeMotionControl:BOOL=ON"
+
+wheel_key=$( (echo "$version|$includes|$devices"; cat "$constraints") | sha256sum | cut -c1-16)
+wheels=${YARP_PEER_WHEEL_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/robogene/yarp-peer/$wheel_key}
+stamp=$venv/.robogene-yarp-peer
+want=$(cat "${BASH_SOURCE[0]}" "$constraints" "$launcher"/* | sha256sum | cut -c1-16)
+
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ] && [ -x "$venv/bin/yarpdev-static" ]; then
   exit 0
 fi
 
@@ -29,41 +43,36 @@ fi
 export PIP_CONSTRAINT=$constraints   # also reaches pip's isolated build environment
 
 if ! ls "$wheels"/yarp_middleware-$version-*.whl >/dev/null 2>&1; then
-  # yarp-middleware 3.5.0 predates the cmake and gcc on this platform: pip's build env pulls a cmake
-  # that refuses the project's old cmake_minimum_required, and gcc 12 no longer includes these
-  # standard headers transitively, so several YARP sources fail to compile without them.
-  export CMAKE_POLICY_VERSION_MINIMUM=3.5
-  export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
-  CXXFLAGS="${CXXFLAGS:-}"
-  for h in utility cstdint limits iterator algorithm functional memory string array cmath; do
-    CXXFLAGS="$CXXFLAGS -include $h"
-  done
-  # The PyPI build is static (BUILD_SHARED_LIBS=OFF), where YARP_init must call the generated
-  # add_yarp{car,pm,mod}_plugins() to register carrier/monitor/device plugins. YARP 3.5.0 sets those
-  # calls as properties of a source named CustomInit.cpp, but the file is yarp/os/Network.CustomInit.cpp,
-  # so without these definitions yarpdev knows no device at all ("not built in").
-  CXXFLAGS="$CXXFLAGS -Dyarpcar_INIT_FUNCTION=add_yarpcar_plugins -Dyarppm_INIT_FUNCTION=add_yarppm_plugins"
-  CXXFLAGS="$CXXFLAGS -Dyarpmod_INIT_FUNCTION=add_yarpmod_plugins"
-  export CXXFLAGS
-  # fakeMotionControl is off by default in 3.5.0; the tests need it behind controlboardwrapper2.
-  devices="ENABLE_yarpmod_fakeMotionControl:BOOL=ON"
-  mkdir -p "$wheels.tmp"
-  "$venv/bin/python" -m pip wheel --disable-pip-version-check --no-cache-dir --no-deps -w "$wheels.tmp" \
+  rm -rf "$wheels.tmp" && mkdir -p "$wheels.tmp"
+  CMAKE_POLICY_VERSION_MINIMUM=3.5 CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2} \
+  CXXFLAGS="${CXXFLAGS:-} $includes" \
+    "$venv/bin/python" -m pip wheel --disable-pip-version-check --no-cache-dir --no-deps -w "$wheels.tmp" \
     --config-settings="--build-option=build_ext --define=$devices" "yarp-middleware==$version"
   rm -rf "$wheels" && mv "$wheels.tmp" "$wheels"
 fi
 "$venv/bin/python" -m pip install --disable-pip-version-check --force-reinstall --no-deps \
   "$wheels"/yarp_middleware-$version-*.whl
+# YARP's CMake package needs YCM to be found; used only to build the launcher below.
+"$venv/bin/python" -m pip install --disable-pip-version-check ycm-cmake-modules
+
+prefix=$(echo "$venv"/lib/python3*/site-packages/yarp)
+ycm=$(echo "$venv"/lib/python3*/site-packages/ycm_cmake_modules/share/cmake/YCM)
+build=$(mktemp -d)
+trap 'rm -rf "$build"' EXIT
+CXXFLAGS="${CXXFLAGS:-} $includes" cmake -S "$launcher" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" -DYCM_DIR="$ycm" -DCMAKE_INSTALL_PREFIX="$venv" >/dev/null
+cmake --build "$build" -j "${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
+cmake --install "$build" >/dev/null
 
 # The tests need these; fail here, not in the middle of a test run.
-for tool in yarp yarpserver yarpdev; do
+for tool in yarp yarpserver yarpdev-static; do
   [ -x "$venv/bin/$tool" ] || { echo "yarp-peer: $venv/bin/$tool was not built" >&2; exit 1; }
 done
 "$venv/bin/python" -c 'import yarp; yarp.Network.init(); b = yarp.Bottle("1 [ok]"); assert b.size() == 2' \
   || { echo "yarp-peer: the yarp Python module does not work" >&2; exit 1; }
-if ! "$venv/bin/yarpdev" --list 2>&1 | grep -q fakeMotionControl; then
-  echo "yarp-peer: yarpdev was built without the fakeMotionControl device" >&2; exit 1
+if ! "$venv/bin/yarpdev-static" --list 2>&1 | grep -q fakeMotionControl; then
+  echo "yarp-peer: yarpdev-static does not know the fakeMotionControl device" >&2; exit 1
 fi
 
-echo "$key" > "$stamp"
+echo "$want" > "$stamp"
 echo "yarp-peer: YARP $version ready in $venv"
