@@ -139,3 +139,18 @@ def test_client_checks_a_yarp_server_by_protocol_version():
     assert client_for(server, yarp_like(9)).check_server() == []
     with pytest.raises(Error, match=r"^controlboard server speaks protocol 1\.8, this client speaks 1\.9$"):
         client_for(server, yarp_like(8)).check_server()
+
+
+def test_command_port_carries_streamed_moves():
+    _, server = board()
+    vmo = Bottle.from_bytes(bytes.fromhex(
+        "0001000002000000" "000100000200000009000000766d6f000100000002000000"
+        "0a01000001000000" + "000000000000" + "1e40"))
+    assert vmo.to_text() == "([vmo] 2) (7.5)"
+    assert server.command(vmo)
+    assert server.respond(Bottle.from_text("[get] [vmo] 2")).to_text().startswith("[is] [vmo] 7.5 [tsta]")
+    assert server.command(Bottle.from_text("([poss]) (10.0 20.0 30.0 40.0)"))
+    assert server.respond(Bottle.from_text("[get] [poss]")).to_text().startswith(
+        "[is] [poss] (10.0 20.0 30.0 40.0)")
+    for bad in ("([vmo] 9) (1.0)", "([bogus] 1) (1.0)", "([vmo] 1)", "([encs]) ()", "[vmo] 1 1.0"):
+        assert server.command(Bottle.from_text(bad)) is False, bad

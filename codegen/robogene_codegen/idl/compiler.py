@@ -13,7 +13,7 @@ from typing import Any, Optional
 from . import fingerprint
 from .errors import IdlError, IdlErrors, Mark
 from .loader import Document, load
-from .model import (BUILTIN_TYPES, RESERVED_WORDS, UNITS, EnumMember, EnumType, Field, Idl, Interface, Method,
+from .model import (BUILTIN_TYPES, RESERVED_WORDS, UNITS, Command, EnumMember, EnumType, Field, Idl, Interface, Method,
                     Protocol, Service, Stream, StructType, TypeRef)
 from .schema import validate
 
@@ -430,8 +430,28 @@ class _Checker:
             else:
                 streams.append(Stream(raw["name"], raw["port"], raw["doc"], iname, method,
                                       float(raw["period"])))
+        command = None
+        if "command" in data:
+            c = data["command"]
+            if c["port"] in seen_ports:
+                self.error(doc.mark(("command", "port")), f"port '{c['port']}' is already "
+                           f"{seen_ports[c['port']]}")
+            elif all(self._vocab_ok(v, doc.mark(("command", "prefix", k)))
+                     for k, v in enumerate(c["prefix"])):
+                prefix = tuple(c["prefix"])
+                routes, seen = [], set()
+                for iface in members:
+                    for m in iface.methods:
+                        if m.wire and m.wire[:len(prefix)] == prefix and len(m.wire) > len(prefix) \
+                                and not m.results and m.wire not in seen:
+                            seen.add(m.wire)
+                            routes.append((m.wire[len(prefix):], m))
+                if not routes:
+                    self.error(doc.mark(("command", "prefix")), "no command of this service starts "
+                               f"with {_vocab_text(prefix)}")
+                command = Command(c["port"], c["doc"], prefix, routes)
         return Service(data["service"], data["version"], data["doc"], data["rpc_port"], members,
-                       protocol, introspection, streams, doc.file, doc.mark(("service",)))
+                       protocol, introspection, streams, command, doc.file, doc.mark(("service",)))
 
     def _service_collisions(self, doc: Document, members: list[Interface],
                             protocol: Optional[Protocol], introspection: Optional[tuple]) -> None:

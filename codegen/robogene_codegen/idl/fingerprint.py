@@ -63,5 +63,7 @@ def assign_service(service: Service) -> None:
         "introspection": list(service.introspection) if service.introspection else None,
         "streams": [{"name": s.name, "port": s.port, "source": f"{s.interface}.{s.method.name}",
                      "period": s.period} for s in service.streams],
+        "command": None if service.command is None else {
+            "port": service.command.port, "prefix": list(service.command.prefix)},
     }
     service.canonical, service.fingerprint = _digest(canonical)

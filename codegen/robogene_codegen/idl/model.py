@@ -137,6 +137,17 @@ class Stream:
 
 
 @dataclass
+class Command:
+    """A streaming port taking (head) (values) messages with no reply: the head is a request path
+    without `prefix`, the values its arguments (YARP 3's command:i, a PortablePair)."""
+
+    port: str
+    doc: str
+    prefix: tuple
+    routes: list  # [(path after the prefix, Method)], commands only
+
+
+@dataclass
 class Service:
     name: str
     version: int
@@ -146,6 +157,7 @@ class Service:
     protocol: Optional[Protocol]
     introspection: Optional[tuple]
     streams: list[Stream]
+    command: Optional[Command]
     file: str
     mark: Mark
     fingerprint: str = ""

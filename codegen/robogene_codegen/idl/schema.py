@@ -53,7 +53,7 @@ def _explain(doc: Document, err: jsonschema.ValidationError) -> list[IdlError]:
         needs = {"interface": ("interface", "version", "doc", "methods"),
                  "service": ("service", "version", "doc", "interfaces", "rpc_port"),
                  "types": ("types",)}[kinds[0]]
-        allowed_extra = {"interface": (), "service": ("protocol", "introspection", "streams"),
+        allowed_extra = {"interface": (), "service": ("protocol", "introspection", "streams", "command"),
                          "types": ()}[kinds[0]]
         missing = [k for k in needs if k not in err.instance]
         if missing:

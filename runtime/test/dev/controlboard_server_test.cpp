@@ -240,3 +240,25 @@ TEST(GrabberServer, ImageStreamMessageIsAYarpImageOfTheCurrentFrame) {
   ASSERT_TRUE(img->getImage(local));  // same simulated time: the same frame
   EXPECT_EQ(sent.pixels, local.pixels);
 }
+
+// command:i: velocityMove(2, 7.5) exactly as remote_controlboard sends it (reference 5.5).
+TEST(ControlboardServer, CommandPortCarriesStreamedMoves) {
+  Board board;
+  const Bottle vmo = Bottle::from_bytes(unhex(
+      "0001000002000000"
+      "000100000200000009000000766d6f000100000002000000"
+      "0a01000001000000000000000000" "1e40"));
+  EXPECT_EQ(vmo.to_text(), "([vmo] 2) (7.5)");
+  EXPECT_TRUE(board.server->command(vmo));
+  EXPECT_EQ(board.ask("[get] [vmo] 2").substr(0, 20), "[is] [vmo] 7.5 [tsta");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([vmos]) (1.0 2.0 3.0 4.0)")));
+  EXPECT_EQ(board.ask("[get] [vmos]").substr(0, 32), "[is] [vmos] (1.0 2.0 3.0 4.0) [t");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([poss]) (10.0 20.0 30.0 40.0)")));
+  EXPECT_EQ(board.ask("[get] [poss]").substr(0, 36), "[is] [poss] (10.0 20.0 30.0 40.0) [t");
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([vmo] 9) (1.0)")));     // no axis 9
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([bogus] 1) (1.0)")));   // unknown head
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([vmo] 1)")));           // no values
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([vmo] 1) (1.0 2.0)")));  // too many
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([encs]) ()")));         // a query
+  EXPECT_FALSE(board.server->command(Bottle::from_text("[vmo] 1 1.0")));         // not a pair
+}

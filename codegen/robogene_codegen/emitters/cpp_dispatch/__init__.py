@@ -77,6 +77,13 @@ def route_init(r: Route) -> str:
     return f"{{{{{path}}}, {len(r.wire)}, {value}, &{r.handler}}}"
 
 
+def command_routes(service: Service) -> list:
+    """The command port's heads, longest first (a longer head is never shadowed)."""
+    if not service.command:
+        return []
+    return sorted(service.command.routes, key=lambda r: (-len(r[0]), r[0]))
+
+
 def class_name(service: Service, role: str = "Server") -> str:
     return "".join(p.capitalize() for p in service.name.split("_")) + role
 
@@ -96,7 +103,7 @@ def client_methods(service: Service) -> list:
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+    helpers = dict(command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
     out = {}

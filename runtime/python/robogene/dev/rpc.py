@@ -15,7 +15,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 from .. import Bottle, Error, Value, vocab
 from .generated import interfaces as _interfaces
 from .generated import types as _types
-from .generated.wire import ENUMS, INTERFACES, SERVICES, STRUCTS
+from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STRUCTS
 
 _INT32 = (-(2 ** 31), 2 ** 31 - 1)
 _OK, _FAIL, _IS, _NAK, _TSTA = (vocab(w) for w in ("ok", "fail", "is", "nak", "tsta"))
@@ -186,6 +186,37 @@ class RpcServer:
             return reply
         self._stamp()  # an unknown query still takes a number, as in YARP
         return _single("fail")
+
+    def command(self, message: Bottle) -> bool:
+        """A message of the streaming command port, ([head...]) (values...), with no reply:
+        the head is a request path without the service's command prefix. Returns whether the
+        device carried it out."""
+        if self.service not in COMMANDS or len(message) != 2 or not message[0].is_list() \
+                or not message[1].is_list():
+            return False
+        prefix = [vocab(w) for w in COMMANDS[self.service][1]]
+        head, values = message[0].as_list(), message[1].as_list()
+        codes = [vocab_of(head[i]) for i in range(len(head))]
+        for key in sorted(self._routes, key=len, reverse=True):
+            if list(key[:len(prefix)]) != prefix or len(key) == len(prefix) or self._routes[key][2]:
+                continue
+            path = key[len(prefix):]
+            if tuple(codes[:len(path)]) != path:
+                continue
+            request = Bottle()
+            for code in prefix:
+                request.add(Value.vocab(code))
+            for item in head:
+                request.add(item)
+            args = self._routes[key][1]
+            if args and args[-1].endswith("[]"):
+                request.add(Value.list(values))
+            else:
+                for v in values:
+                    request.add(v)
+            reply = self.respond(request)
+            return len(reply) == 1 and vocab_of(reply[0]) == _OK
+        return False
 
     def _call(self, request, start, echo, args, results, candidates) -> Optional[Bottle]:
         if len(request) != start + len(args):

@@ -1131,6 +1131,59 @@ bool ControlboardServer::publish_state(Bottle& out) {
   return true;
 }
 
+bool ControlboardServer::command(const Bottle& message) {
+  struct CommandRoute {
+    vocab_t path[3];
+    std::size_t length;
+    bool packed;  // the values are one per-axis list, not separate arguments
+  };
+  static const CommandRoute kCommands[] = {
+      {{vocab("icmd"), vocab("cmds")}, 2, true},  // IControlMode.setControlModes
+      {{vocab("icmd"), vocab("cmod")}, 2, false},  // IControlMode.setControlMode
+      {{vocab("pid"), vocab("lim")}, 2, false},  // IPidControl.setPidErrorLimit
+      {{vocab("pid"), vocab("lims")}, 2, true},  // IPidControl.setPidErrorLimits
+      {{vocab("pid"), vocab("pid")}, 2, false},  // IPidControl.setPid
+      {{vocab("pid"), vocab("pids")}, 2, true},  // IPidControl.setPids
+      {{vocab("pid"), vocab("ref")}, 2, false},  // IPidControl.setPidReference
+      {{vocab("pid"), vocab("refs")}, 2, true},  // IPidControl.setPidReferences
+      {{vocab("torq"), vocab("ref")}, 2, false},  // ITorqueControl.setRefTorque
+      {{vocab("torq"), vocab("refs")}, 2, true},  // ITorqueControl.setRefTorques
+      {{vocab("acc")}, 1, false},  // IPositionControl.setRefAcceleration
+      {{vocab("accs")}, 1, true},  // IPositionControl.setRefAccelerations
+      {{vocab("enc")}, 1, false},  // IEncoders.setEncoder
+      {{vocab("encs")}, 1, true},  // IEncoders.setEncoders
+      {{vocab("ere")}, 1, false},  // IEncoders.resetEncoder
+      {{vocab("eres")}, 1, false},  // IEncoders.resetEncoders
+      {{vocab("pos")}, 1, false},  // IPositionControl.positionMove
+      {{vocab("poss")}, 1, true},  // IPositionControl.positionMoveAll
+      {{vocab("rel")}, 1, false},  // IPositionControl.relativeMove
+      {{vocab("rels")}, 1, true},  // IPositionControl.relativeMoveAll
+      {{vocab("sto")}, 1, false},  // IPositionControl.stop
+      {{vocab("stos")}, 1, false},  // IPositionControl.stopAll
+      {{vocab("vel")}, 1, false},  // IPositionControl.setRefSpeed
+      {{vocab("vels")}, 1, true},  // IPositionControl.setRefSpeeds
+      {{vocab("vmo")}, 1, false},  // IVelocityControl.velocityMove
+      {{vocab("vmos")}, 1, true},  // IVelocityControl.velocityMoveAll
+  };
+  if (message.size() != 2 || !message[0].is_list() || !message[1].is_list()) return false;
+  const Bottle& head = message[0].as_list();
+  const Bottle& values = message[1].as_list();
+  for (const CommandRoute& c : kCommands) {
+    if (!matches(head, c.path, c.length)) continue;
+    Bottle request;
+    request.add(Value::vocab(vocab("set")));
+    for (const Value& item : head) request.add(item);
+    if (c.packed) {
+      request.add(Value::list(values));
+    } else {
+      for (const Value& v : values) request.add(v);
+    }
+    const Bottle reply = respond(request);
+    return reply.size() == 1 && rpc::vocab_of(reply[0]) == vocab("ok");
+  }
+  return false;
+}
+
 Bottle ControlboardServer::respond(const Bottle& req) {
   if (req.size() < 2) return single("nak");
   {

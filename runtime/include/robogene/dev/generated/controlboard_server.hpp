@@ -24,7 +24,7 @@ namespace robogene::dev {
 class ControlboardServer {
  public:
   static constexpr const char* kServiceName = "controlboard";
-  static constexpr const char* kFingerprint = "250cecc3f9e97bd6";
+  static constexpr const char* kFingerprint = "4d0bf7253fef0946";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {
@@ -40,6 +40,9 @@ class ControlboardServer {
   explicit ControlboardServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);
+  // A message of <name>/command:i (no reply): ([head...]) (values...). Returns whether
+  // the device carried it out; a malformed message or an unknown head is refused.
+  bool command(const Bottle& message);
   // What <name>/state:o publishes every 0.02 s: Joint positions as a YARP Vector (a float64 list), with a Stamp envelope.
   // False when the device cannot provide it (then nothing is published).
   bool publish_state(Bottle& out);

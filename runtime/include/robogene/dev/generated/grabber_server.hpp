@@ -24,7 +24,7 @@ namespace robogene::dev {
 class GrabberServer {
  public:
   static constexpr const char* kServiceName = "grabber";
-  static constexpr const char* kFingerprint = "989f003e54305536";
+  static constexpr const char* kFingerprint = "a0683a2a407cd898";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {

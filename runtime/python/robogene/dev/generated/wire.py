@@ -183,10 +183,15 @@ STRUCTS = {
 
 # service -> (fingerprint, interfaces, protocol (path, reply, version) or None, introspection path)
 SERVICES = {
-    "controlboard": ("250cecc3f9e97bd6", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
+    "controlboard": ("4d0bf7253fef0946", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
 (("get", "prot", ), "prot", [1, 9, 0]),
 ("get", "rgif", )),
-    "grabber": ("989f003e54305536", ("IFrameGrabberImage", "IFrameGrabberControls", ),
+    "grabber": ("a0683a2a407cd898", ("IFrameGrabberImage", "IFrameGrabberControls", ),
 None,
 ("get", "rgif", )),
+}
+
+# service -> (command port, prefix) for services with a streaming command port
+COMMANDS = {
+    "controlboard": ("command:i", ("set", )),
 }
