@@ -29,6 +29,8 @@ struct PortOptions {
   net::Millis send_timeout{2000};
   net::Millis connect_timeout{5000};
   net::Millis handshake_timeout{10000};
+  // Connections beyond this many open inputs are closed at once (one thread each).
+  std::size_t max_inputs = 512;
 };
 
 // What a reader learns about one incoming message besides its content.

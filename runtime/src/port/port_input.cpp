@@ -4,6 +4,7 @@
 // Input side of a Port: accepting connections, one thread per connection, the message loop
 // with data, admin, reverse, quit and the text-mode commands of reference section 3.5.
 #include <string>
+#include <system_error>
 
 #include "port_core.hpp"
 #include "robogene/carrier/registry.hpp"
@@ -47,10 +48,20 @@ void Port::Core::accept_loop() {
     auto unit = std::make_shared<InputUnit>();
     std::lock_guard<std::mutex> lock(mutex);
     if (closing) break;
-    unit->thread = std::thread(
-        [self = shared_from_this(), unit, stream = std::move(*s)]() mutable {
-          self->serve(unit, std::move(stream));
-        });
+    if (inputs.size() >= options.max_inputs) {
+      log::warn(name, "refused a connection from " + s->peer_text() + ": already " +
+                          std::to_string(inputs.size()) + " inputs (the limit)");
+      continue;  // the stream closes as it goes out of scope
+    }
+    try {
+      unit->thread = std::thread(
+          [self = shared_from_this(), unit, stream = std::move(*s)]() mutable {
+            self->serve(unit, std::move(stream));
+          });
+    } catch (const std::system_error& e) {
+      log::warn(name, std::string("cannot start a thread for a new connection: ") + e.what());
+      continue;
+    }
     inputs.push_back(unit);
   }
 }

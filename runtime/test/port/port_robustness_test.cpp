@@ -230,3 +230,21 @@ TEST_F(PortRobustness, CloseSendsQuitUnregistersNothingAndJoins) {
   }  // ~Port closes: "q" reaches /r, whose input goes away
   EXPECT_TRUE(eventually([&] { return r.input_names().empty(); }));
 }
+
+TEST_F(PortRobustness, ConnectionsBeyondTheInputLimitAreClosedAtOnce) {
+  PortOptions o;
+  o.max_inputs = 3;
+  Port r(o);
+  r.open_at("/r", {"127.0.0.1", 0});
+  std::vector<net::TcpStream> held;
+  for (int i = 0; i < 3; ++i) {
+    held.push_back(net::TcpStream::connect({"127.0.0.1", r.contact().port}));
+    send(held.back(), std::string("CONNECT t") + std::to_string(i) + "\r\n");
+    read_until(held.back(), "\r\n");
+  }
+  auto extra = net::TcpStream::connect({"127.0.0.1", r.contact().port});
+  EXPECT_TRUE(closed_by_peer(extra));
+  held.clear();  // the three leave; their slots free up
+  ASSERT_TRUE(eventually([&] { return r.input_names().empty(); }));
+  expect_still_serving(r);
+}
