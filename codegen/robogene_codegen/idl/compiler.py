@@ -363,7 +363,7 @@ class _Checker:
                 return []
             single.form, single.twin = "axis", all_raw["name"]
             forms.append(Method(iface, all_raw["name"], all_raw.get("cpp_name", all_raw["name"]),
-                                f"{raw['doc']} All axes at once.", awire, aecho, aargs, aresults,
+                                all_raw.get("doc", f"{raw['doc']} All axes at once."), awire, aecho, aargs, aresults,
                                 doc.mark(apath + ("name",)), form="all", twin=raw["name"]))
         return forms
 

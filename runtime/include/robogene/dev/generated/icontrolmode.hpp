@@ -29,7 +29,7 @@ class IControlMode {
   // Wire: [get] [icmd] [cmod].
   virtual bool getControlMode(int j, ControlMode& mode) = 0;
 
-  // The control mode of one axis. All axes at once.
+  // The control mode of every axis.
   // out modes
   // Wire: [get] [icmd] [cmds], one value per axis.
   virtual bool getControlModes(std::vector<ControlMode>& modes) = 0;
@@ -39,7 +39,7 @@ class IControlMode {
   // Wire: [set] [icmd] [cmod].
   virtual bool setControlMode(int j, ControlMode mode) = 0;
 
-  // Switch one axis to a control mode. All axes at once.
+  // Switch every axis to a control mode.
   // in modes
   // Wire: [set] [icmd] [cmds], one value per axis.
   virtual bool setControlModes(const std::vector<ControlMode>& modes) = 0;

@@ -34,7 +34,7 @@ class IEncoders {
   // Wire: [get] [enc].
   virtual bool getEncoder(int j, double& v) = 0;
 
-  // The measured position of one axis. All axes at once.
+  // The measured positions of all axes.
   // out vs [deg]
   // Wire: [get] [encs], one value per axis.
   virtual bool getEncoders(std::vector<double>& vs) = 0;
@@ -44,7 +44,7 @@ class IEncoders {
   // Wire: [get] [esp].
   virtual bool getEncoderSpeed(int j, double& sp) = 0;
 
-  // The measured speed of one axis. All axes at once.
+  // The measured speeds of all axes.
   // out sps [deg/s]
   // Wire: [get] [esps], one value per axis.
   virtual bool getEncoderSpeeds(std::vector<double>& sps) = 0;
@@ -54,7 +54,7 @@ class IEncoders {
   // Wire: [get] [eac].
   virtual bool getEncoderAcceleration(int j, double& acc) = 0;
 
-  // The measured acceleration of one axis. All axes at once.
+  // The measured accelerations of all axes.
   // out accs [deg/s^2]
   // Wire: [get] [eacs], one value per axis.
   virtual bool getEncoderAccelerations(std::vector<double>& accs) = 0;
@@ -64,7 +64,7 @@ class IEncoders {
   // Wire: [set] [ere].
   virtual bool resetEncoder(int j) = 0;
 
-  // Make the current position of one axis read as zero. All axes at once.
+  // Make the current positions of all axes read as zero.
   // Wire: [set] [eres], one value per axis.
   virtual bool resetEncoders() = 0;
 
@@ -73,7 +73,7 @@ class IEncoders {
   // Wire: [set] [enc].
   virtual bool setEncoder(int j, double val) = 0;
 
-  // Make the current position of one axis read as the given value. All axes at once.
+  // Make the current positions of all axes read as the given values.
   // in vals [deg]
   // Wire: [set] [encs], one value per axis.
   virtual bool setEncoders(const std::vector<double>& vals) = 0;

@@ -29,7 +29,7 @@ class IPidControl {
   // Wire: [set] [pid] [pid].
   virtual bool setPid(PidType pidtype, int j, const Pid& pid) = 0;
 
-  // Replace the gains of one controller of one axis. All axes at once.
+  // Replace the gains of one controller of every axis.
   // in pidtype; in pids
   // Wire: [set] [pid] [pids], one value per axis.
   virtual bool setPids(PidType pidtype, const std::vector<Pid>& pids) = 0;
@@ -39,7 +39,7 @@ class IPidControl {
   // Wire: [get] [pid] [pid].
   virtual bool getPid(PidType pidtype, int j, Pid& pid) = 0;
 
-  // The gains of one controller of one axis. All axes at once.
+  // The gains of one controller of every axis.
   // in pidtype; out pids
   // Wire: [get] [pid] [pids], one value per axis.
   virtual bool getPids(PidType pidtype, std::vector<Pid>& pids) = 0;
@@ -49,7 +49,7 @@ class IPidControl {
   // Wire: [set] [pid] [ref].
   virtual bool setPidReference(PidType pidtype, int j, double ref) = 0;
 
-  // Drive one controller directly with a reference; this bypasses trajectory generation. All axes at once.
+  // Drive one controller of every axis directly with a reference.
   // in pidtype; in refs
   // Wire: [set] [pid] [refs], one value per axis.
   virtual bool setPidReferences(PidType pidtype, const std::vector<double>& refs) = 0;
@@ -59,7 +59,7 @@ class IPidControl {
   // Wire: [get] [pid] [ref].
   virtual bool getPidReference(PidType pidtype, int j, double& ref) = 0;
 
-  // The reference one controller is following. All axes at once.
+  // The references one controller of every axis is following.
   // in pidtype; out refs
   // Wire: [get] [pid] [refs], one value per axis.
   virtual bool getPidReferences(PidType pidtype, std::vector<double>& refs) = 0;
@@ -69,7 +69,7 @@ class IPidControl {
   // Wire: [set] [pid] [lim].
   virtual bool setPidErrorLimit(PidType pidtype, int j, double limit) = 0;
 
-  // The largest error one controller tolerates. All axes at once.
+  // The largest errors one controller of each axis tolerates.
   // in pidtype; in limits
   // Wire: [set] [pid] [lims], one value per axis.
   virtual bool setPidErrorLimits(PidType pidtype, const std::vector<double>& limits) = 0;
@@ -79,7 +79,7 @@ class IPidControl {
   // Wire: [get] [pid] [lim].
   virtual bool getPidErrorLimit(PidType pidtype, int j, double& limit) = 0;
 
-  // The largest error one controller tolerates. All axes at once.
+  // The largest errors one controller of each axis tolerates.
   // in pidtype; out limits
   // Wire: [get] [pid] [lims], one value per axis.
   virtual bool getPidErrorLimits(PidType pidtype, std::vector<double>& limits) = 0;
@@ -89,7 +89,7 @@ class IPidControl {
   // Wire: [get] [pid] [err].
   virtual bool getPidError(PidType pidtype, int j, double& err) = 0;
 
-  // The current error of one controller. All axes at once.
+  // The current errors of one controller of every axis.
   // in pidtype; out errs
   // Wire: [get] [pid] [errs], one value per axis.
   virtual bool getPidErrors(PidType pidtype, std::vector<double>& errs) = 0;
@@ -99,7 +99,7 @@ class IPidControl {
   // Wire: [get] [pid] [out].
   virtual bool getPidOutput(PidType pidtype, int j, double& out) = 0;
 
-  // The current output of one controller (for example a PWM value). All axes at once.
+  // The current outputs of one controller of every axis.
   // in pidtype; out outs
   // Wire: [get] [pid] [outs], one value per axis.
   virtual bool getPidOutputs(PidType pidtype, std::vector<double>& outs) = 0;

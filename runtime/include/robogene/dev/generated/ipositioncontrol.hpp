@@ -34,7 +34,7 @@ class IPositionControl {
   // Wire: [set] [pos].
   virtual bool positionMove(int j, double ref) = 0;
 
-  // Start moving one axis to an absolute position. All axes at once.
+  // Start moving every axis to an absolute position.
   // in refs [deg]
   // Wire: [set] [poss], one value per axis.
   virtual bool positionMove(const std::vector<double>& refs) = 0;
@@ -44,7 +44,7 @@ class IPositionControl {
   // Wire: [set] [rel].
   virtual bool relativeMove(int j, double delta) = 0;
 
-  // Start moving one axis by an offset from its current target. All axes at once.
+  // Start moving every axis by an offset from its current target.
   // in deltas [deg]
   // Wire: [set] [rels], one value per axis.
   virtual bool relativeMove(const std::vector<double>& deltas) = 0;
@@ -54,7 +54,7 @@ class IPositionControl {
   // Wire: [get] [don].
   virtual bool checkMotionDone(int j, bool& flag) = 0;
 
-  // Whether one axis has reached its target. All axes at once.
+  // Whether each axis has reached its target.
   // out flags
   // Wire: [get] [dons], one value per axis.
   virtual bool checkMotionDone(std::vector<bool>& flags) = 0;
@@ -64,7 +64,7 @@ class IPositionControl {
   // Wire: [set] [vel].
   virtual bool setRefSpeed(int j, double sp) = 0;
 
-  // The speed at which later position moves of one axis travel. All axes at once.
+  // The speeds at which later position moves of each axis travel.
   // in sps [deg/s]
   // Wire: [set] [vels], one value per axis.
   virtual bool setRefSpeeds(const std::vector<double>& sps) = 0;
@@ -74,7 +74,7 @@ class IPositionControl {
   // Wire: [set] [acc].
   virtual bool setRefAcceleration(int j, double acc) = 0;
 
-  // The acceleration with which later moves of one axis speed up and slow down. All axes at once.
+  // The accelerations with which later moves of each axis speed up and slow down.
   // in accs [deg/s^2]
   // Wire: [set] [accs], one value per axis.
   virtual bool setRefAccelerations(const std::vector<double>& accs) = 0;
@@ -84,7 +84,7 @@ class IPositionControl {
   // Wire: [get] [vel].
   virtual bool getRefSpeed(int j, double& sp) = 0;
 
-  // The reference speed of one axis. All axes at once.
+  // The reference speed of each axis.
   // out sps [deg/s]
   // Wire: [get] [vels], one value per axis.
   virtual bool getRefSpeeds(std::vector<double>& sps) = 0;
@@ -94,7 +94,7 @@ class IPositionControl {
   // Wire: [get] [acc].
   virtual bool getRefAcceleration(int j, double& acc) = 0;
 
-  // The reference acceleration of one axis. All axes at once.
+  // The reference acceleration of each axis.
   // out accs [deg/s^2]
   // Wire: [get] [accs], one value per axis.
   virtual bool getRefAccelerations(std::vector<double>& accs) = 0;
@@ -104,7 +104,7 @@ class IPositionControl {
   // Wire: [set] [sto].
   virtual bool stop(int j) = 0;
 
-  // Decelerate one axis to rest at its reference acceleration. All axes at once.
+  // Decelerate every axis to rest at its reference acceleration.
   // Wire: [set] [stos], one value per axis.
   virtual bool stop() = 0;
 
@@ -113,7 +113,7 @@ class IPositionControl {
   // Wire: [get] [pos].
   virtual bool getTargetPosition(int j, double& ref) = 0;
 
-  // The position the last position move of one axis is heading for. All axes at once.
+  // The positions the last position moves are heading for.
   // out refs [deg]
   // Wire: [get] [poss], one value per axis.
   virtual bool getTargetPositions(std::vector<double>& refs) = 0;

@@ -34,7 +34,7 @@ class ITorqueControl {
   // Wire: [get] [torq] [trq].
   virtual bool getTorque(int j, double& t) = 0;
 
-  // The measured torque of one axis. All axes at once.
+  // The measured torques of all axes.
   // out ts [Nm]
   // Wire: [get] [torq] [trqs], one value per axis.
   virtual bool getTorques(std::vector<double>& ts) = 0;
@@ -44,7 +44,7 @@ class ITorqueControl {
   // Wire: [set] [torq] [ref].
   virtual bool setRefTorque(int j, double t) = 0;
 
-  // The torque one axis should exert. All axes at once.
+  // The torques all axes should exert.
   // in ts [Nm]
   // Wire: [set] [torq] [refs], one value per axis.
   virtual bool setRefTorques(const std::vector<double>& ts) = 0;
@@ -54,7 +54,7 @@ class ITorqueControl {
   // Wire: [get] [torq] [ref].
   virtual bool getRefTorque(int j, double& t) = 0;
 
-  // The torque reference of one axis (not the measurement). All axes at once.
+  // The torque references of all axes.
   // out ts [Nm]
   // Wire: [get] [torq] [refs], one value per axis.
   virtual bool getRefTorques(std::vector<double>& ts) = 0;
@@ -64,7 +64,7 @@ class ITorqueControl {
   // Wire: [get] [torq] [rng].
   virtual bool getTorqueRange(int j, double& min, double& max) = 0;
 
-  // The smallest and largest torque one axis can exert. All axes at once.
+  // The smallest and largest torques each axis can exert.
   // out mins [Nm]; out maxs [Nm]
   // Wire: [get] [torq] [rngs], one value per axis.
   virtual bool getTorqueRanges(std::vector<double>& mins, std::vector<double>& maxs) = 0;

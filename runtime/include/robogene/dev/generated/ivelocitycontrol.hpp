@@ -34,7 +34,7 @@ class IVelocityControl {
   // Wire: [set] [vmo].
   virtual bool velocityMove(int j, double sp) = 0;
 
-  // Start moving one axis at a velocity. All axes at once.
+  // Start moving every axis at a velocity.
   // in sps [deg/s]
   // Wire: [set] [vmos], one value per axis.
   virtual bool velocityMove(const std::vector<double>& sps) = 0;
@@ -44,7 +44,7 @@ class IVelocityControl {
   // Wire: [set] [acc].
   virtual bool setRefAcceleration(int j, double acc) = 0;
 
-  // The acceleration with which later moves of one axis speed up and slow down. All axes at once.
+  // The accelerations with which later moves of each axis speed up and slow down.
   // in accs [deg/s^2]
   // Wire: [set] [accs], one value per axis.
   virtual bool setRefAccelerations(const std::vector<double>& accs) = 0;
@@ -54,7 +54,7 @@ class IVelocityControl {
   // Wire: [get] [acc].
   virtual bool getRefAcceleration(int j, double& acc) = 0;
 
-  // The reference acceleration of one axis. All axes at once.
+  // The reference acceleration of each axis.
   // out accs [deg/s^2]
   // Wire: [get] [accs], one value per axis.
   virtual bool getRefAccelerations(std::vector<double>& accs) = 0;
@@ -64,7 +64,7 @@ class IVelocityControl {
   // Wire: [set] [sto].
   virtual bool stop(int j) = 0;
 
-  // Decelerate one axis to rest at its reference acceleration. All axes at once.
+  // Decelerate every axis to rest at its reference acceleration.
   // Wire: [set] [stos], one value per axis.
   virtual bool stop() = 0;
 
@@ -73,7 +73,7 @@ class IVelocityControl {
   // Wire: [get] [vmo].
   virtual bool getRefVelocity(int j, double& vel) = 0;
 
-  // The velocity the last velocity move of one axis asked for. All axes at once.
+  // The velocities the last velocity moves asked for.
   // out vels [deg/s]
   // Wire: [get] [vmos], one value per axis.
   virtual bool getRefVelocities(std::vector<double>& vels) = 0;

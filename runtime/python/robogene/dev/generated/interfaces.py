@@ -29,7 +29,7 @@ class IControlMode(abc.ABC):
 
     @abc.abstractmethod
     def getControlModes(self) -> Optional[List[ControlMode]]:
-        """The control mode of one axis. All axes at once. Wire: [get] [icmd] [cmds]."""
+        """The control mode of every axis. Wire: [get] [icmd] [cmds]."""
 
     @abc.abstractmethod
     def setControlMode(self, j: int, mode: ControlMode) -> bool:
@@ -37,7 +37,7 @@ class IControlMode(abc.ABC):
 
     @abc.abstractmethod
     def setControlModes(self, modes: Sequence[ControlMode]) -> bool:
-        """Switch one axis to a control mode. All axes at once. Wire: [set] [icmd] [cmds]."""
+        """Switch every axis to a control mode. Wire: [set] [icmd] [cmds]."""
 
 
 class IEncoders(abc.ABC):
@@ -57,7 +57,7 @@ class IEncoders(abc.ABC):
 
     @abc.abstractmethod
     def getEncoders(self) -> Optional[List[float]]:
-        """The measured position of one axis. All axes at once. Wire: [get] [encs]."""
+        """The measured positions of all axes. Wire: [get] [encs]."""
 
     @abc.abstractmethod
     def getEncoderSpeed(self, j: int) -> Optional[float]:
@@ -65,7 +65,7 @@ class IEncoders(abc.ABC):
 
     @abc.abstractmethod
     def getEncoderSpeeds(self) -> Optional[List[float]]:
-        """The measured speed of one axis. All axes at once. Wire: [get] [esps]."""
+        """The measured speeds of all axes. Wire: [get] [esps]."""
 
     @abc.abstractmethod
     def getEncoderAcceleration(self, j: int) -> Optional[float]:
@@ -73,7 +73,7 @@ class IEncoders(abc.ABC):
 
     @abc.abstractmethod
     def getEncoderAccelerations(self) -> Optional[List[float]]:
-        """The measured acceleration of one axis. All axes at once. Wire: [get] [eacs]."""
+        """The measured accelerations of all axes. Wire: [get] [eacs]."""
 
     @abc.abstractmethod
     def resetEncoder(self, j: int) -> bool:
@@ -81,7 +81,7 @@ class IEncoders(abc.ABC):
 
     @abc.abstractmethod
     def resetEncoders(self) -> bool:
-        """Make the current position of one axis read as zero. All axes at once. Wire: [set] [eres]."""
+        """Make the current positions of all axes read as zero. Wire: [set] [eres]."""
 
     @abc.abstractmethod
     def setEncoder(self, j: int, val: float) -> bool:
@@ -89,7 +89,7 @@ class IEncoders(abc.ABC):
 
     @abc.abstractmethod
     def setEncoders(self, vals: Sequence[float]) -> bool:
-        """Make the current position of one axis read as the given value. All axes at once. Wire: [set] [encs]."""
+        """Make the current positions of all axes read as the given values. Wire: [set] [encs]."""
 
 
 class IFrameGrabberControls(abc.ABC):
@@ -161,7 +161,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def setPids(self, pidtype: PidType, pids: Sequence[Pid]) -> bool:
-        """Replace the gains of one controller of one axis. All axes at once. Wire: [set] [pid] [pids]."""
+        """Replace the gains of one controller of every axis. Wire: [set] [pid] [pids]."""
 
     @abc.abstractmethod
     def getPid(self, pidtype: PidType, j: int) -> Optional[Pid]:
@@ -169,7 +169,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def getPids(self, pidtype: PidType) -> Optional[List[Pid]]:
-        """The gains of one controller of one axis. All axes at once. Wire: [get] [pid] [pids]."""
+        """The gains of one controller of every axis. Wire: [get] [pid] [pids]."""
 
     @abc.abstractmethod
     def setPidReference(self, pidtype: PidType, j: int, ref: float) -> bool:
@@ -177,7 +177,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def setPidReferences(self, pidtype: PidType, refs: Sequence[float]) -> bool:
-        """Drive one controller directly with a reference; this bypasses trajectory generation. All axes at once. Wire: [set] [pid] [refs]."""
+        """Drive one controller of every axis directly with a reference. Wire: [set] [pid] [refs]."""
 
     @abc.abstractmethod
     def getPidReference(self, pidtype: PidType, j: int) -> Optional[float]:
@@ -185,7 +185,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def getPidReferences(self, pidtype: PidType) -> Optional[List[float]]:
-        """The reference one controller is following. All axes at once. Wire: [get] [pid] [refs]."""
+        """The references one controller of every axis is following. Wire: [get] [pid] [refs]."""
 
     @abc.abstractmethod
     def setPidErrorLimit(self, pidtype: PidType, j: int, limit: float) -> bool:
@@ -193,7 +193,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def setPidErrorLimits(self, pidtype: PidType, limits: Sequence[float]) -> bool:
-        """The largest error one controller tolerates. All axes at once. Wire: [set] [pid] [lims]."""
+        """The largest errors one controller of each axis tolerates. Wire: [set] [pid] [lims]."""
 
     @abc.abstractmethod
     def getPidErrorLimit(self, pidtype: PidType, j: int) -> Optional[float]:
@@ -201,7 +201,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def getPidErrorLimits(self, pidtype: PidType) -> Optional[List[float]]:
-        """The largest error one controller tolerates. All axes at once. Wire: [get] [pid] [lims]."""
+        """The largest errors one controller of each axis tolerates. Wire: [get] [pid] [lims]."""
 
     @abc.abstractmethod
     def getPidError(self, pidtype: PidType, j: int) -> Optional[float]:
@@ -209,7 +209,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def getPidErrors(self, pidtype: PidType) -> Optional[List[float]]:
-        """The current error of one controller. All axes at once. Wire: [get] [pid] [errs]."""
+        """The current errors of one controller of every axis. Wire: [get] [pid] [errs]."""
 
     @abc.abstractmethod
     def getPidOutput(self, pidtype: PidType, j: int) -> Optional[float]:
@@ -217,7 +217,7 @@ class IPidControl(abc.ABC):
 
     @abc.abstractmethod
     def getPidOutputs(self, pidtype: PidType) -> Optional[List[float]]:
-        """The current output of one controller (for example a PWM value). All axes at once. Wire: [get] [pid] [outs]."""
+        """The current outputs of one controller of every axis. Wire: [get] [pid] [outs]."""
 
 
 class IPositionControl(abc.ABC):
@@ -237,7 +237,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def positionMoveAll(self, refs: Sequence[float]) -> bool:
-        """Start moving one axis to an absolute position. All axes at once. Wire: [set] [poss]."""
+        """Start moving every axis to an absolute position. Wire: [set] [poss]."""
 
     @abc.abstractmethod
     def relativeMove(self, j: int, delta: float) -> bool:
@@ -245,7 +245,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def relativeMoveAll(self, deltas: Sequence[float]) -> bool:
-        """Start moving one axis by an offset from its current target. All axes at once. Wire: [set] [rels]."""
+        """Start moving every axis by an offset from its current target. Wire: [set] [rels]."""
 
     @abc.abstractmethod
     def checkMotionDone(self, j: int) -> Optional[bool]:
@@ -253,7 +253,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def checkMotionDoneAll(self) -> Optional[List[bool]]:
-        """Whether one axis has reached its target. All axes at once. Wire: [get] [dons]."""
+        """Whether each axis has reached its target. Wire: [get] [dons]."""
 
     @abc.abstractmethod
     def setRefSpeed(self, j: int, sp: float) -> bool:
@@ -261,7 +261,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def setRefSpeeds(self, sps: Sequence[float]) -> bool:
-        """The speed at which later position moves of one axis travel. All axes at once. Wire: [set] [vels]."""
+        """The speeds at which later position moves of each axis travel. Wire: [set] [vels]."""
 
     @abc.abstractmethod
     def setRefAcceleration(self, j: int, acc: float) -> bool:
@@ -269,7 +269,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def setRefAccelerations(self, accs: Sequence[float]) -> bool:
-        """The acceleration with which later moves of one axis speed up and slow down. All axes at once. Wire: [set] [accs]."""
+        """The accelerations with which later moves of each axis speed up and slow down. Wire: [set] [accs]."""
 
     @abc.abstractmethod
     def getRefSpeed(self, j: int) -> Optional[float]:
@@ -277,7 +277,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def getRefSpeeds(self) -> Optional[List[float]]:
-        """The reference speed of one axis. All axes at once. Wire: [get] [vels]."""
+        """The reference speed of each axis. Wire: [get] [vels]."""
 
     @abc.abstractmethod
     def getRefAcceleration(self, j: int) -> Optional[float]:
@@ -285,7 +285,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def getRefAccelerations(self) -> Optional[List[float]]:
-        """The reference acceleration of one axis. All axes at once. Wire: [get] [accs]."""
+        """The reference acceleration of each axis. Wire: [get] [accs]."""
 
     @abc.abstractmethod
     def stop(self, j: int) -> bool:
@@ -293,7 +293,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def stopAll(self) -> bool:
-        """Decelerate one axis to rest at its reference acceleration. All axes at once. Wire: [set] [stos]."""
+        """Decelerate every axis to rest at its reference acceleration. Wire: [set] [stos]."""
 
     @abc.abstractmethod
     def getTargetPosition(self, j: int) -> Optional[float]:
@@ -301,7 +301,7 @@ class IPositionControl(abc.ABC):
 
     @abc.abstractmethod
     def getTargetPositions(self) -> Optional[List[float]]:
-        """The position the last position move of one axis is heading for. All axes at once. Wire: [get] [poss]."""
+        """The positions the last position moves are heading for. Wire: [get] [poss]."""
 
 
 class ITorqueControl(abc.ABC):
@@ -321,7 +321,7 @@ class ITorqueControl(abc.ABC):
 
     @abc.abstractmethod
     def getTorques(self) -> Optional[List[float]]:
-        """The measured torque of one axis. All axes at once. Wire: [get] [torq] [trqs]."""
+        """The measured torques of all axes. Wire: [get] [torq] [trqs]."""
 
     @abc.abstractmethod
     def setRefTorque(self, j: int, t: float) -> bool:
@@ -329,7 +329,7 @@ class ITorqueControl(abc.ABC):
 
     @abc.abstractmethod
     def setRefTorques(self, ts: Sequence[float]) -> bool:
-        """The torque one axis should exert. All axes at once. Wire: [set] [torq] [refs]."""
+        """The torques all axes should exert. Wire: [set] [torq] [refs]."""
 
     @abc.abstractmethod
     def getRefTorque(self, j: int) -> Optional[float]:
@@ -337,7 +337,7 @@ class ITorqueControl(abc.ABC):
 
     @abc.abstractmethod
     def getRefTorques(self) -> Optional[List[float]]:
-        """The torque reference of one axis (not the measurement). All axes at once. Wire: [get] [torq] [refs]."""
+        """The torque references of all axes. Wire: [get] [torq] [refs]."""
 
     @abc.abstractmethod
     def getTorqueRange(self, j: int) -> Optional[Tuple[float, float]]:
@@ -345,7 +345,7 @@ class ITorqueControl(abc.ABC):
 
     @abc.abstractmethod
     def getTorqueRanges(self) -> Optional[Tuple[List[float], List[float]]]:
-        """The smallest and largest torque one axis can exert. All axes at once. Wire: [get] [torq] [rngs]."""
+        """The smallest and largest torques each axis can exert. Wire: [get] [torq] [rngs]."""
 
 
 class IVelocityControl(abc.ABC):
@@ -365,7 +365,7 @@ class IVelocityControl(abc.ABC):
 
     @abc.abstractmethod
     def velocityMoveAll(self, sps: Sequence[float]) -> bool:
-        """Start moving one axis at a velocity. All axes at once. Wire: [set] [vmos]."""
+        """Start moving every axis at a velocity. Wire: [set] [vmos]."""
 
     @abc.abstractmethod
     def setRefAcceleration(self, j: int, acc: float) -> bool:
@@ -373,7 +373,7 @@ class IVelocityControl(abc.ABC):
 
     @abc.abstractmethod
     def setRefAccelerations(self, accs: Sequence[float]) -> bool:
-        """The acceleration with which later moves of one axis speed up and slow down. All axes at once. Wire: [set] [accs]."""
+        """The accelerations with which later moves of each axis speed up and slow down. Wire: [set] [accs]."""
 
     @abc.abstractmethod
     def getRefAcceleration(self, j: int) -> Optional[float]:
@@ -381,7 +381,7 @@ class IVelocityControl(abc.ABC):
 
     @abc.abstractmethod
     def getRefAccelerations(self) -> Optional[List[float]]:
-        """The reference acceleration of one axis. All axes at once. Wire: [get] [accs]."""
+        """The reference acceleration of each axis. Wire: [get] [accs]."""
 
     @abc.abstractmethod
     def stop(self, j: int) -> bool:
@@ -389,7 +389,7 @@ class IVelocityControl(abc.ABC):
 
     @abc.abstractmethod
     def stopAll(self) -> bool:
-        """Decelerate one axis to rest at its reference acceleration. All axes at once. Wire: [set] [stos]."""
+        """Decelerate every axis to rest at its reference acceleration. Wire: [set] [stos]."""
 
     @abc.abstractmethod
     def getRefVelocity(self, j: int) -> Optional[float]:
@@ -397,4 +397,4 @@ class IVelocityControl(abc.ABC):
 
     @abc.abstractmethod
     def getRefVelocities(self) -> Optional[List[float]]:
-        """The velocity the last velocity move of one axis asked for. All axes at once. Wire: [get] [vmos]."""
+        """The velocities the last velocity moves asked for. Wire: [get] [vmos]."""
