@@ -129,17 +129,6 @@ void TextOutbound::await_completion(Bottle* reply) {
   if (reply) *reply = Bottle::from_text(reply_text);
 }
 
-std::vector<std::string> TextOutbound::exchange_lines(const std::string& text) {
-  link_->stream.write_all(text.data(), text.size());
-  std::vector<std::string> lines;
-  if (!acks_) return lines;
-  for (;;) {
-    std::string line = link_->reader.read_line(max_line_);
-    if (line == "<ACK>") return lines;
-    lines.push_back(std::move(line));
-  }
-}
-
 void TextOutbound::close() noexcept {
   if (closed_ || !link_) return;
   closed_ = true;

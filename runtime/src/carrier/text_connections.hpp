@@ -57,9 +57,6 @@ class TextOutbound final : public OutboundConnection {
   void await_completion(Bottle* reply) override;
   void set_timeout(net::Millis t) override;
   void close() noexcept override;
-  // Sends raw text lines (e.g. "a\r\n[list] [out]\r\n") and returns the reply lines that came
-  // before "<ACK>" (text_ack only), each without its line end.
-  std::vector<std::string> exchange_lines(const std::string& text);
 
  private:
   std::unique_ptr<Link> link_;
