@@ -1,0 +1,91 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include "robogene/dev/generated/interfaces.hpp"
+#include "robogene/dev/joint_data.hpp"
+#include "robogene/dev/poly_driver.hpp"
+
+using namespace robogene;
+using namespace robogene::dev;
+
+namespace {
+
+std::string hex(const std::vector<std::uint8_t>& bytes) {
+  static const char* digits = "0123456789abcdef";
+  std::string out;
+  for (auto b : bytes) {
+    out += digits[b >> 4];
+    out += digits[b & 15];
+  }
+  return out;
+}
+
+// One stateExt:o message of a YARP 3 fakeMotionControl with 4 axes (reference capture
+// sniff_stateExt.txt): joint positions 1-4, motor positions 10-40, PWM 33-36, currents 3300-3600,
+// all modes [pos], every field valid.
+const char* kCaptured =
+    "00010000160000000a01000004000000000000000000f03f000000000000004000000000000008400000000000001040"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a01000004000000000000000000244000000000000034400000000000003e400000000000004440"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000804040000000000000414000000000008041400000000000004240"
+    "090000006f6b00000a010000040000000000000000c8a940000000000090aa40000000000058ab40000000000020ac40"
+    "090000006f6b00000101000004000000706f7300706f7300706f7300706f7300090000006f6b00000101000004000000"
+    "00000000000000000000000000000000090000006f6b0000";
+
+}  // namespace
+
+TEST(JointData, LayoutMatchesYarpsAndFieldsTestMotorLacksAreInvalid) {
+  PolyDriver device(Property::from_command_line({"--device", "test_motor", "--clock", "manual"}));
+  DeviceDriver* driver = nullptr;
+  IEncoders* enc = nullptr;
+  ASSERT_TRUE(device.view(driver) && device.view(enc));
+  ASSERT_TRUE(enc->setEncoders({1.0, 2.0, 3.0, 4.0}));
+  Bottle message;
+  ASSERT_TRUE(encode_joint_data(*driver, message));
+  ASSERT_EQ(message.size(), 22u);
+  // The capture with test_motor's differences: no motor encoders, torque, PWM, current or
+  // interaction mode, so those are zeros flagged [fail] (09000000 6661696c).
+  std::string expected = kCaptured;
+  auto replace_field = [&](std::size_t field, const std::string& values) {
+    // Each float64 field is 8 + 32 bytes of vector then 8 bytes of flag; find it by walking.
+    const Bottle captured = Bottle::from_bytes([&] {
+      std::vector<std::uint8_t> b;
+      for (std::size_t i = 0; i + 1 < expected.size(); i += 2) {
+        b.push_back(static_cast<std::uint8_t>(std::stoi(expected.substr(i, 2), nullptr, 16)));
+      }
+      return b;
+    }());
+    Bottle edited;
+    for (std::size_t i = 0; i < captured.size(); ++i) {
+      if (i == 2 * field) {
+        edited.add(Bottle::from_text(values)[0]);
+      } else if (i == 2 * field + 1) {
+        edited.add(Value::vocab(vocab("fail")));
+      } else {
+        edited.add(captured[i]);
+      }
+    }
+    expected = hex(edited.to_bytes());
+  };
+  for (std::size_t field : {3u, 4u, 5u, 6u, 7u, 8u}) replace_field(field, "(0.0 0.0 0.0 0.0)");
+  replace_field(10, "(0 0 0 0)");
+  EXPECT_EQ(hex(message.to_bytes()), expected);
+  EXPECT_EQ(message.to_text(),
+            "(1.0 2.0 3.0 4.0) [ok] (0.0 0.0 0.0 0.0) [ok] (0.0 0.0 0.0 0.0) [ok] "
+            "(0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "
+            "(0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "
+            "(7565168 7565168 7565168 7565168) [ok] (0 0 0 0) [fail]");
+}
+
+TEST(JointData, ADeviceWithoutEncodersHasNoState) {
+  PolyDriver device(Property::from_command_line({"--device", "fake_grabber", "--clock", "manual"}));
+  DeviceDriver* driver = nullptr;
+  ASSERT_TRUE(device.view(driver));
+  Bottle message;
+  EXPECT_FALSE(encode_joint_data(*driver, message));
+}
