@@ -3,7 +3,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Regenerate tests/vectors/yarp3_bottles.json and yarp3_typed_values.json from the real YARP peer.
 
-Run with the peer's interpreter:  .yarp-venv/bin/python tests/interop/gen_yarp3_vectors.py
+Run with the peer's interpreter:  .yarp-venv/bin/python tests/interop/gen_yarp3_vectors.py [OUT_DIR]
+(OUT_DIR defaults to tests/vectors; the interop tests write elsewhere and compare.)
 For each text: Bottle.fromString (YARP's parser), Bottle.toString (YARP's rendering), and the bytes a
 yarp.Port writes for it, captured by a raw-socket input port on a private yarpserver. Values the text
 syntax cannot express (int8, int16, float32) are built with the typed add* calls instead.
@@ -81,7 +82,7 @@ def capture(yarp, port, sniffer, bottle) -> str:
 
 
 def main() -> int:
-    out_dir = ROOT / "tests" / "vectors"
+    out_dir = Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "tests" / "vectors"
     procs = ProcessGroup()
     with tempfile.TemporaryDirectory(prefix="yarp-vectors-") as tmp:
         net = PrivateNetwork.create(Path(tmp), interop_net.free_port_block())
