@@ -71,6 +71,8 @@ class Port {
   // Names of other ports are found with the name client given to open(); tests and tools
   // without a name server can supply their own lookup.
   void set_resolver(Resolver r);
+  // A port need not be opened to write: an unopened port connects its outputs as the anonymous
+  // sender "anon_rpc" (like `yarp rpc`) and listens nowhere.
 
   // Connects this port's output to `target` ("/r" or "tcp://r"); `carrier` overrides. Replaces
   // an existing connection to the same port. Throws robogene::Error naming the target.

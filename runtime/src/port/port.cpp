@@ -68,7 +68,8 @@ void Port::open(const std::string& name, NameClient names) {
 void Port::open(const std::string& name) { open(name, NameClient::from_config()); }
 
 void Port::close() {
-  if (!core_->open.exchange(false)) return;
+  // Also for a port that was never opened: its outputs still get their "q".
+  core_->open = false;
   core_->shutdown();
 }
 

@@ -31,7 +31,8 @@ void Port::Core::connect_output(const Contact& to, const std::string& carrier_na
   std::string dummy;
   remove_output_report(to.name, dummy);  // a new connection replaces an old one
   carrier::ConnectContext ctx;
-  ctx.sender_name = name;
+  // A port that was never opened writes anonymously, as `yarp rpc` does.
+  ctx.sender_name = name.empty() ? "anon_rpc" : name;
   ctx.target_name = to.name;
   ctx.timeout = options.connect_timeout;
   ctx.max_message_size = options.max_message_size;

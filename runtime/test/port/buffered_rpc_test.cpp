@@ -137,3 +137,17 @@ TEST(Rpc, CallWithoutServerOrAfterItDiedNamesTheProblem) {
     EXPECT_NE(std::string(e.what()).find("/s"), std::string::npos) << e.what();
   }
 }
+
+TEST(Rpc, UnopenedPortWritesAsAnonymousSender) {
+  Port server;
+  server.open_at("/srv", {"127.0.0.1", 0});
+  server.set_reader([](const Bottle&, const MessageInfo& info, Bottle* reply) {
+    if (reply) *reply = Bottle{Value(info.from)};
+  });
+  Port anon;
+  anon.add_output(server.contact());
+  Bottle reply;
+  ASSERT_TRUE(anon.write(Bottle{Value(1)}, reply));
+  EXPECT_EQ(reply.to_text(), "anon_rpc");
+  EXPECT_FALSE(anon.is_open());
+}
