@@ -314,3 +314,22 @@ def test_echo_vocab_must_be_a_vocab(tmp_path):
         """)})
     assert err == (f"{tmp_path}/i.yaml:9:11: error: vocab 'things' must be 1 to 4 printable ASCII "
                    "characters; YARP would truncate it to [thin]")
+
+
+def test_aliases_are_refused_rather_than_expanded(tmp_path):
+    bomb = "idl: 1\ntypes:\n  a: &a [x, x, x, x, x, x, x, x, x]\n  b: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+    errs = errors_of(tmp_path, {"bomb.yaml": bomb})
+    assert errs[0] == f"{tmp_path}/bomb.yaml:3:6: error: this value is reused through an alias (*name); aliases are not allowed in IDL files"
+
+
+def test_absurd_nesting_is_refused(tmp_path):
+    deep = "idl: 1\ntypes: " + "[" * 200 + "]" * 200 + "\n"
+    err = errors_of(tmp_path, {"deep.yaml": deep})[0]
+    assert "deep.yaml:2:" in err and "nested more than 32 levels deep" in err
+
+
+def test_non_utf8_file(tmp_path):
+    (tmp_path / "bin.yaml").write_bytes(b"idl: 1\n\xff\xfe\n")
+    with pytest.raises(IdlErrors) as info:
+        compile_directory(tmp_path)
+    assert str(info.value) == f"{tmp_path}/bin.yaml:1:1: error: not UTF-8 text (byte 7)"

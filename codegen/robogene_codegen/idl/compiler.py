@@ -39,6 +39,9 @@ def compile_files(paths: list[Path], schema: Path = DEFAULT_SCHEMA,
         except UnicodeDecodeError as exc:
             errors.append(IdlError(Mark(name, 1, 1), f"not UTF-8 text (byte {exc.start})"))
             continue
+        except OSError as exc:
+            errors.append(IdlError(Mark(name, 1, 1), f"cannot read the file ({exc.strerror})"))
+            continue
         try:
             doc = load(name, text)
         except IdlErrors as exc:

@@ -9,7 +9,7 @@ that a repeated key (which PyYAML would silently overwrite) is reported instead.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Optional
 
 import yaml
 
@@ -69,9 +69,22 @@ def load(file: str, text: str) -> Document:
     return doc
 
 
+MAX_DEPTH = 32  # far deeper than any IDL file needs; guards the recursion below
+
+
 def _convert(loader, doc: Document, node: yaml.Node, path: Path,
-             errors: list[IdlError]) -> Any:
+             errors: list[IdlError], seen: Optional[set] = None) -> Any:
+    seen = set() if seen is None else seen
     doc.value_marks[path] = _mark(doc.file, node)
+    if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
+        # Aliases (*name) would let a small file expand exponentially; the IDL has no use for them.
+        if id(node) in seen:
+            errors.append(IdlError(_mark(doc.file, node), "this value is reused through an alias (*name); aliases are not allowed in IDL files"))
+            return None
+        seen.add(id(node))
+        if len(path) > MAX_DEPTH:
+            errors.append(IdlError(_mark(doc.file, node), f"nested more than {MAX_DEPTH} levels deep"))
+            return None
     if isinstance(node, yaml.MappingNode):
         loader.flatten_mapping(node)  # resolves `<<` merge keys
         out: dict = {}
@@ -86,8 +99,8 @@ def _convert(loader, doc: Document, node: yaml.Node, path: Path,
                                        f"duplicate key '{key}' (first given at line {first.line})"))
                 continue
             doc.key_marks[path + (key,)] = _mark(doc.file, key_node)
-            out[key] = _convert(loader, doc, value_node, path + (key,), errors)
+            out[key] = _convert(loader, doc, value_node, path + (key,), errors, seen)
         return out
     if isinstance(node, yaml.SequenceNode):
-        return [_convert(loader, doc, item, path + (i,), errors) for i, item in enumerate(node.value)]
+        return [_convert(loader, doc, item, path + (i,), errors, seen) for i, item in enumerate(node.value)]
     return loader.construct_object(node, deep=True)

@@ -3,12 +3,20 @@
 //
 // Typed reads of a configuration: one place that turns a wrong value into a message naming it.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "robogene/dev/property.hpp"
 
 namespace robogene::dev {
 namespace {
+
+// Bounds are the program's own round numbers: print them as people write them (1e-09, 64).
+std::string shortest(double d) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", d);
+  return buf;
+}
 
 [[noreturn]] void fail(const Searchable& s, std::string_view key, const std::string& what) {
   throw ConfigError(s.origin(key) + ": key '" + std::string(key) + "': " + what);
@@ -51,8 +59,7 @@ double Searchable::get_float(std::string_view key, double fallback, double min, 
   if (!v.is_number()) fail(*this, key, "expected a number, got " + v.to_text());
   const double d = v.as_float64();
   if (!std::isfinite(d) || d < min || d > max) {
-    fail(*this, key, v.to_text() + " is outside [" + Value(min).to_text() + ", " +
-                         Value(max).to_text() + "]");
+    fail(*this, key, v.to_text() + " is outside [" + shortest(min) + ", " + shortest(max) + "]");
   }
   return d;
 }

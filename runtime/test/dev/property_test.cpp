@@ -80,9 +80,9 @@ TEST(Property, TypedReadsNameTheOriginOfABadValue) {
   EXPECT_EQ(error_of([&] { p.get_int("axes", 0, 1, 64); }),
             "m.ini:1: key 'axes': expected an integer, got two");
   EXPECT_EQ(error_of([&] { p.get_float("speed", 0, 0, 100); }),
-            "m.ini:2: key 'speed': 1000000000.0 is outside [0.0, 100.0]");
+            "m.ini:2: key 'speed': 1000000000.0 is outside [0, 100]");
   EXPECT_EQ(error_of([&] { p.get_float("rate", 0, 0, 100); }),
-            "m.ini:3: key 'rate': nan is outside [0.0, 100.0]");
+            "m.ini:3: key 'rate': nan is outside [0, 100]");
   EXPECT_EQ(error_of([&] { p.get_bool("flag", false); }),
             "m.ini:4: key 'flag': expected true or false, got maybe");
   EXPECT_EQ(error_of([&] { p.require("missing"); }), "m.ini: missing key 'missing'");
