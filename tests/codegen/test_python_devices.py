@@ -172,3 +172,52 @@ def test_typed_reads_name_the_origin():
         p.get_bool("flag", False)
     with pytest.raises(ConfigError, match=r"^m\.ini: missing key 'nope'$"):
         p.require("nope")
+
+
+def grabber(extra=None):
+    config = {"device": "fake_grabber", "width": 64, "height": 48, "framerate": 25, "clock": "manual"}
+    config.update(extra or {})
+    device = PolyDriver(Property.from_dict(config))
+    assert device.is_valid(), device.last_error
+    return device
+
+
+def test_fake_grabber_pattern_moves_between_frames():
+    device = grabber()
+    img = device.view(IFrameGrabberImage)
+    assert (img.width(), img.height()) == (64, 48)
+    a = img.getImage()
+    assert device.view(ISimulationClock).advance(1 / 25)
+    b = img.getImage()
+    assert [a.pixel(x, y) for x, y in ((0, 0), (17, 3), (40, 20))] == [(0, 0, 40), (17, 3, 200), (40, 20, 200)]
+    for y in range(47):
+        for x in range(62):
+            assert b.pixel(x, y)[0] == a.pixel(x + 2, y)[0]
+            assert b.pixel(x, y)[1] == a.pixel(x, y + 1)[1]
+
+
+def test_fake_grabber_brightness_gain_and_controls():
+    from robogene.dev import CameraFeature, FeatureMode, IFrameGrabberControls
+    device = grabber()
+    img, ctl = device.view(IFrameGrabberImage), device.view(IFrameGrabberControls)
+    plain = img.getImage()
+    assert ctl.setFeature(CameraFeature.BRIGHTNESS, 0.75)
+    bright = img.getImage()
+    assert bright.pixels == bytearray(min(255, p + 64) for p in plain.pixels)
+    assert ctl.setFeature(CameraFeature.BRIGHTNESS, 0.5) and ctl.setFeature(CameraFeature.GAIN, 0.25)
+    assert img.getImage().pixels == bytearray(int(p * 0.5 + 0.5) for p in plain.pixels)
+    assert ctl.hasFeature(CameraFeature.FOCUS) is False
+    assert ctl.setFeature(CameraFeature.FOCUS, 0.5) is False
+    assert ctl.setFeature(CameraFeature.SHUTTER, 1.5) is False
+    assert ctl.setMode(CameraFeature.SHUTTER) and ctl.getMode(CameraFeature.SHUTTER) == FeatureMode.MANUAL
+    assert ctl.setMode(CameraFeature.SHUTTER, FeatureMode.UNKNOWN) is False
+
+
+def test_fake_grabber_wall_clock_rate():
+    device = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 8, "height": 8, "framerate": 50}))
+    img = device.view(IFrameGrabberImage)
+    img.getImage()
+    start = time.monotonic()
+    for _ in range(5):
+        assert img.getImage() is not None
+    assert time.monotonic() - start >= 4 / 50
