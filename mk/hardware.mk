@@ -3,11 +3,16 @@
 #
 # Head mechanics, BOM and fabrication package (hardware/mechanics, hardware/bom -> build/fab).
 # `make fab` builds the package; inside it every output is keyed by a content hash, so only what changed is
-# rebuilt. BOARD_BOMS: CSV BOMs of the KiCad boards (Reference, Value, Footprint, MPN, Qty) merged into the BOM.
+# rebuilt. BOARD_BOMS: CSV BOMs of the KiCad boards (Reference, Value, Footprint, MPN, Qty) merged into the
+# BOM, each boards.count times per head (PATH:N for another count). By default: the motor board's BOM from
+# mk/electronics.mk, which is then built first.
 
 FAB        := $(BUILD)/fab
 HW_PY      := PYTHONPATH=$(ROOT)/hardware/mechanics:$(ROOT)/hardware/bom $(PY)
-BOARD_BOMS ?= $(sort $(wildcard $(FAB)/boards/*-bom.csv))
+ifdef ELEC_FAB
+BOARD_BOMS   ?= $(ELEC_FAB)/bom.csv
+HW_BOARD_DEP := $(ELEC_FAB)/.stamp
+endif
 HW_SOURCES := hardware/head-parameters.yaml $(shell find hardware/mechanics hardware/bom -type f \
                 \( -name '*.py' -o -name '*.yaml' -o -name '*.scad' \) 2>/dev/null)
 
@@ -24,7 +29,7 @@ $(STAMPS)/py-hardware: tools/setup/requirements-hardware.txt $(VENV)/.stamp | $(
 	$(PY) -m pip install -q --disable-pip-version-check -r $<
 	touch $@
 
-$(FAB)/manifest.json: $(HW_SOURCES) $(BOARD_BOMS) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
+$(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS)) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
 	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b))
 
 .PHONY: fab test-hardware

@@ -89,7 +89,9 @@ def test_board_bom_merges_into_the_head_bom(params, assembly, tmp_path):
     out = tmp_path / "bom"
     bom = build.write_package(params, assembly.parts, [DATA / "head-neck-board-bom.csv"], out, batch=5, catalog_path=path)
     qty = {l.item.key: l.per_head for l in bom.lines}
-    assert qty["ti-DRV8876PWPR"] == 2 and qty["yageo-RC0603FR-0710KL"] == 6
+    copies = int(params.root.node("boards").num("count"))   # one board design, built `count` times per head
+    assert qty["ti-DRV8876PWPR"] == 2 * copies and qty["yageo-RC0603FR-0710KL"] == 6 * copies
+    assert qty[params.root.node("boards").text("pcb")] == copies
     rows = list(csv.DictReader((out / "robogene-head-bom.csv").open()))
     assert {r["mpn"] for r in rows} >= {"DRV8876PWPR", "RC0603FR-0710KL", "2342S012CR"}
     assert "head-neck-board-bom" in (out / "robogene-head-bom.md").read_text()
@@ -112,10 +114,19 @@ def test_malformed_board_bom_is_named(tmp_path):
 
 
 def test_package_bom_files(fab, params, assembly):
+    import json
+    from pathlib import Path
     rows = list(csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open()))
     qty = {r["key"]: int(r["qty_per_head"]) for r in rows}
-    assert qty == dict(Counter(p.design for p in assembly.parts if p.kind == "purchased")) | \
-        {k: 1 for k, _, _ in mounts.belts(params)}
+    expected = Counter(p.design for p in assembly.parts if p.kind == "purchased") + Counter(
+        {k: 1 for k, _, _ in mounts.belts(params)})
+    sources = json.loads((fab / "bom" / "sources.json").read_text())
+    by_mpn = catalog.load(sources["catalog"]).by_mpn()
+    for b in sources["board_boms"]:   # recount the board parts straight from the KiCad CSV
+        for row in csv.DictReader(open(b["path"], encoding="utf-8-sig")):
+            expected[by_mpn[row["MPN"].casefold()].key] += int(row["Qty"]) * b["copies"]
+        expected[params.root.node("boards").text("pcb")] += b["copies"]
+    assert qty == dict(expected)
     batch = int(params.root.node("bom").num("batch"))
     assert all(int(r["qty_batch"]) == batch * int(r["qty_per_head"]) for r in rows)
     md = (fab / "bom" / "robogene-head-bom.md").read_text()

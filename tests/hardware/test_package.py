@@ -19,8 +19,8 @@ from conftest import FAB, REPO
 def test_manifest_checksums_match(fab):
     manifest = json.loads((fab / "manifest.json").read_text())
     listed = {f["path"] for f in manifest["files"]}
-    on_disk = {str(p.relative_to(fab)) for p in fab.rglob("*") if p.is_file() and p.relative_to(fab).parts[0] != ".cache"
-               and p.name not in ("manifest.json", "SHA256SUMS")}
+    from robogene_head.fab import PACKAGE_ENTRIES
+    on_disk = {str(p.relative_to(fab)) for p in fab.rglob("*") if p.is_file() and p.relative_to(fab).parts[0] in PACKAGE_ENTRIES}
     assert listed == on_disk
     for f in manifest["files"]:
         assert hashlib.sha256((fab / f["path"]).read_bytes()).hexdigest() == f["sha256"], f["path"]

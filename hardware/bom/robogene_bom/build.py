@@ -3,6 +3,8 @@
 """Write the head's BOM files (CSV for ordering, made-parts CSV, Markdown, HTML) into one folder."""
 from __future__ import annotations
 
+import json
+import re
 from pathlib import Path
 
 from . import catalog as catalog_mod
@@ -11,18 +13,35 @@ from . import collect, render
 
 def write_package(params, parts, board_boms: list[Path], out: Path, batch: int | None = None,
                   catalog_path: Path | None = None) -> collect.Bom:
+    """board_boms: CSV files, each merged boards.count times per head (the head uses one board design),
+    or PATH:N to give another count."""
     from robogene_head.parts import mounts
 
     batch = batch if batch is not None else int(params.root.node("bom").num("batch", positive=True))
     if batch < 1:
         raise ValueError(f"batch must be >= 1, got {batch}")
     catalog = catalog_mod.load(catalog_path)
-    bom = collect.collect(parts, mounts.belts(params), board_boms, catalog)
+    boards = params.root.node("boards")
+    copies = int(boards.num("count", positive=True))
+    pcb = boards.text("pcb") if boards.has("pcb") else None
+    bom = collect.collect(parts, mounts.belts(params), [_board_arg(b, copies) for b in board_boms], catalog, pcb)
     out.mkdir(parents=True, exist_ok=True)
     name = params.root.text("name")
     (out / f"{name}-bom.csv").write_text(render.to_csv(bom, batch))
     (out / f"{name}-made-parts.csv").write_text(render.made_csv(bom, batch))
     (out / f"{name}-bom.md").write_text(render.to_markdown(bom, batch))
+    (out / "sources.json").write_text(json.dumps({
+        "batch": batch, "catalog": str(catalog.path),
+        "board_boms": [{"path": str(p), "copies": n} for p, n in (_board_arg(b, copies) for b in board_boms)]}, indent=1))
     (out / f"{name}-bom.html").write_text(render.to_html(bom, batch, f"Robogene head rev {params.root['revision']}: "
                                                                      f"bill of materials"))
     return bom
+
+
+def _board_arg(arg, default: int) -> tuple[Path, int]:
+    """PATH or PATH:N (N copies of that board per head)."""
+    text = str(arg)
+    match = re.fullmatch(r"(.+):(\d+)", text)
+    if match and not Path(text).exists():
+        return Path(match.group(1)), int(match.group(2))
+    return Path(text), default

@@ -39,8 +39,9 @@ class Bom:
         return sum(line.per_head * line.item.unit_price(line.per_head * heads) for line in self.lines)
 
 
-def collect(parts, belts, board_boms: list[Path], catalog: Catalog) -> Bom:
-    """parts: robogene_head Part objects; belts: (catalog key, joint, teeth) from mounts.belts."""
+def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, pcb_key: str | None = None) -> Bom:
+    """parts: robogene_head Part objects; belts: (catalog key, joint, teeth) from mounts.belts;
+    board_boms: (CSV path, copies of that board per head); pcb_key: catalog key of a bare board, one per copy."""
     counts: OrderedDict[str, list[str]] = OrderedDict()
     for part in parts:
         if part.kind == "purchased":
@@ -50,19 +51,28 @@ def collect(parts, belts, board_boms: list[Path], catalog: Catalog) -> Bom:
     lines = [Line(catalog.get(key, f"CAD part {users[0]}"), len(users), users) for key, users in counts.items()]
     by_mpn = catalog.by_mpn()
     board_names = []
-    for path in board_boms:
-        board_names.append(path.stem)
+
+    def add(item: Item, quantity: int, user: str) -> None:
+        existing = next((l for l in lines if l.item.key == item.key), None)
+        if existing is None:
+            existing = Line(item, 0, [])
+            lines.append(existing)
+        existing.per_head += quantity
+        existing.used_in.append(user)
+
+    for path, copies in board_boms:
+        if copies < 1:
+            raise CatalogError(f"{path}: copies per head must be >= 1, got {copies}")
+        name = path.parent.name if path.stem == "bom" else path.stem   # build/fab/electronics/bom.csv -> electronics
+        board_names.append(f"{name} x{copies}" if copies > 1 else name)
         for entry in board.read(path):
             item = by_mpn.get(entry.mpn.casefold())
             if item is None:
                 raise CatalogError(f"{catalog.path}: no entry with mpn {entry.mpn!r} (needed by {entry.source}, "
                                    f"{entry.references or entry.value}); add it under parts:")
-            existing = next((l for l in lines if l.item.key == item.key), None)
-            if existing is None:
-                existing = Line(item, 0, [])
-                lines.append(existing)
-            existing.per_head += entry.quantity
-            existing.used_in.append(f"{path.stem}: {entry.references}")
+            add(item, entry.quantity * copies, f"{path.stem}: {entry.references}")
+        if pcb_key:
+            add(catalog.get(pcb_key, f"board BOM {path.name}"), copies, f"{path.stem}: bare board")
     made_counts = Counter((p.design, p.kind, p.material) for p in parts if p.kind in ("machined", "printed"))
     made = [MadePart(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
     return Bom(lines, made, catalog.currency, board_names)

@@ -48,6 +48,7 @@ def designs_of(parts):
 
 
 def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: int | None, progress: Progress) -> dict:
+    out = out.resolve()   # FreeCAD runs in a scratch directory: every path it gets must be absolute
     out.mkdir(parents=True, exist_ok=True)
     cache = Cache(out / ".cache" / "state.json")
     params = load(params_path)
@@ -82,6 +83,11 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
             cache.record(f"design:{design}", h)
         summary.append({"design": design, "kind": part.kind, "material": part.material, "quantity": len(entry["instances"]),
                         "instances": entry["instances"], "volume_mm3": round(part.local.Volume(), 3), "hash": h})
+    _remove_stale(out / "step", {f"{d}.step" for d in designs}, progress)
+    _remove_stale(out / "stl", {f"{d}.stl" for d, e in designs.items() if e["part"].kind == "printed"} |
+                  {f"{s.stem}.stl" for s in openscad.sources()}, progress)
+    machined_designs = {d for d, e in designs.items() if e["part"].kind == "machined"}
+    _remove_stale(out / "drawings", {f"{d}.svg" for d in machined_designs}, progress)
     geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
                           [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
 
@@ -155,7 +161,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
     # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
     from . import freecad
-    step_files = sorted((out / "step").glob("*.step")) + [asm_out[0]]
+    step_files = [out / "step" / f"{d['design']}.step" for d in summary] + [asm_out[0]]
     expected = {d["design"]: d["volume_mm3"] for d in summary}
     expected["robogene_head"] = round(sum(p.local.Volume() for p in parts), 3)
     solids = {"robogene_head": len(parts)}
@@ -205,6 +211,16 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     return manifest
 
 
+def _remove_stale(folder: Path, keep: set[str], progress: Progress) -> None:
+    """Outputs of designs that no longer exist must not linger in the package."""
+    if not folder.is_dir():
+        return
+    for path in sorted(folder.iterdir()):
+        if path.is_file() and path.name not in keep:
+            progress.note(f"removing stale {path.relative_to(folder.parent)}")
+            path.unlink()
+
+
 def mass_summary(params, props) -> dict:
     head_links = ["head_frame", "eyes_tilt_link", "left_eye", "right_eye"]
     poses = kinematics.link_poses(params, {})
@@ -234,11 +250,15 @@ def _write(path: Path, text: str) -> None:
     path.write_text(text)
 
 
+# The package's own top-level entries; other areas (build/fab/electronics) keep their own manifests.
+PACKAGE_ENTRIES = ("assembly", "bom", "config", "drawings", "renders", "reports", "step", "stl", "urdf", "parts.json")
+
+
 def write_manifest(out: Path, params_text: bytes) -> dict:
     files = []
     for path in sorted(out.rglob("*")):
         rel = path.relative_to(out)
-        if path.is_dir() or rel.parts[0] == ".cache" or rel.name in ("manifest.json", "SHA256SUMS"):
+        if path.is_dir() or rel.parts[0] not in PACKAGE_ENTRIES:
             continue
         files.append({"path": str(rel), "bytes": path.stat().st_size,
                       "sha256": hashlib.sha256(path.read_bytes()).hexdigest()})
@@ -253,8 +273,9 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", type=Path, default=REPO / "build" / "fab")
     ap.add_argument("--params", type=Path, default=None)
-    ap.add_argument("--board-bom", type=Path, action="append", default=[],
-                    help="CSV BOM of a KiCad board (Reference, Value, Footprint, MPN, Qty); repeatable")
+    ap.add_argument("--board-bom", action="append", default=[],
+                    help="CSV BOM of a KiCad board (Reference, Value, Footprint, MPN, Qty), merged boards.count times "
+                         "per head, or PATH:N for N copies; repeatable")
     ap.add_argument("--batch", type=int, default=None, help="number of heads for the batch cost (default: parameter file)")
     args = ap.parse_args(argv)
     progress = Progress()

@@ -9,7 +9,7 @@ from . import mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
-STANDOFF = "standoff-M3x36-FF"
+STANDOFF = "standoff-M3x46-FF"
 
 
 def _base(params: HeadParameters) -> list[Part]:
@@ -21,6 +21,9 @@ def _base(params: HeadParameters) -> list[Part]:
     ut, ul, gap = up.num("thickness", positive=True), up.num("length", positive=True), up.num("gap", positive=True)
     hp = params.joints["neck_pitch"].origin[2]
     corners = [(sx * (L / 2 - inset), sy * (W / 2 - inset)) for sx in (-1, 1) for sy in (-1, 1)]
+    if params.purchased(STANDOFF).num("length") != bay:
+        raise ParameterError(f"{params.path}: geometry.neck_base.bay_height: {bay} differs from the length of the "
+                             f"standoffs ({STANDOFF}: {params.purchased(STANDOFF).num('length')})")
     y_up = gap / 2 + ut / 2
     upright_screws = [(sx * ul / 4, sy * y_up) for sx in (-1, 1) for sy in (-1, 1)]
 
