@@ -221,3 +221,56 @@ def test_fake_grabber_wall_clock_rate():
     for _ in range(5):
         assert img.getImage() is not None
     assert time.monotonic() - start >= 4 / 50
+
+
+AXIS_MAIN = r"""
+#include <cstdio>
+#include "axis_motion.hpp"
+using robogene::dev::AxisMotion;
+int main() {
+  AxisMotion a;
+  a.set_ref_speed(5); a.set_ref_acceleration(100); a.move_to(40);
+  for (int i = 0; i < 300; ++i) { a.step(0.01); std::printf("%.17g %.17g\n", a.position(), a.velocity()); }
+  a.stop();
+  a.move_at(-3);
+  for (int i = 0; i < 100; ++i) { a.step(0.013); std::printf("%.17g %.17g\n", a.position(), a.velocity()); }
+  a.stop();
+  for (int i = 0; i < 50; ++i) { a.step(0.01); std::printf("%.17g %.17g\n", a.position(), a.velocity()); }
+  return 0;
+}
+"""
+
+
+def test_python_and_cpp_test_motor_share_one_motion_model(tmp_path):
+    """Both languages' axis models agree to the last bit on the same command sequence."""
+    import subprocess
+    from pathlib import Path
+    from robogene.dev.drivers.axis_motion import AxisMotion
+
+    drivers = Path(__file__).resolve().parents[2] / "runtime" / "src" / "dev" / "drivers"
+    (tmp_path / "main.cpp").write_text(AXIS_MAIN)
+    exe = tmp_path / "axis"
+    cc = subprocess.run(["g++", "-std=c++17", "-O2", "-ffp-contract=off", "-I", str(drivers),
+                         str(tmp_path / "main.cpp"), str(drivers / "axis_motion.cpp"), "-o", str(exe)],
+                        capture_output=True, text=True)
+    assert cc.returncode == 0, cc.stderr
+    cpp = [tuple(float(x) for x in line.split()) for line in
+           subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.splitlines()]
+
+    a = AxisMotion()
+    a.ref_speed, a.ref_acceleration = 5.0, 100.0
+    a.move_to(40.0)
+    py = []
+    for _ in range(300):
+        a.step(0.01)
+        py.append((a.position, a.velocity))
+    a.stop()
+    a.move_at(-3.0)
+    for _ in range(100):
+        a.step(0.013)
+        py.append((a.position, a.velocity))
+    a.stop()
+    for _ in range(50):
+        a.step(0.01)
+        py.append((a.position, a.velocity))
+    assert py == cpp
