@@ -154,3 +154,16 @@ def test_command_port_carries_streamed_moves():
         "[is] [poss] (10.0 20.0 30.0 40.0)")
     for bad in ("([vmo] 9) (1.0)", "([bogus] 1) (1.0)", "([vmo] 1)", "([encs]) ()", "[vmo] 1 1.0"):
         assert server.command(Bottle.from_text(bad)) is False, bad
+
+
+def test_stream_messages_match_yarp():
+    device, server = board()
+    assert device._device.setEncoders([1.0, 2.0, 3.0, 4.0])
+    assert server.publish("state").to_bytes().hex() == (
+        "0a01000004000000000000000000f03f000000000000004000000000000008400000000000001040")
+    cam = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 640, "height": 480, "clock": "manual"}))
+    message = RpcServer("grabber", cam._device).publish("image").to_bytes()
+    assert len(message) == 60 + 921600
+    # The 60-byte header of a captured YARP 3 frame (sniff_image.txt).
+    assert message[:60].hex() == ("0001000004000000090000006d61740009000000726762000101000005000000"
+                                  "0300000000100e000800010080020000e00100000c00000000100e00")

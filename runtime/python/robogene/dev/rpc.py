@@ -15,7 +15,8 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 from .. import Bottle, Error, Value, vocab
 from .generated import interfaces as _interfaces
 from .generated import types as _types
-from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STRUCTS
+from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STREAMS, STRUCTS
+from .image import ImageRgb
 
 _INT32 = (-(2 ** 31), 2 ** 31 - 1)
 _OK, _FAIL, _IS, _NAK, _TSTA = (vocab(w) for w in ("ok", "fail", "is", "nak", "tsta"))
@@ -187,6 +188,22 @@ class RpcServer:
         self._stamp()  # an unknown query still takes a number, as in YARP
         return _single("fail")
 
+    def publish(self, stream: str) -> Optional[Bottle]:
+        """The message the stream port publishes now (None when the device cannot provide it):
+        a per-axis list is the message itself (a YARP Vector), an image a YARP 3 image."""
+        port, period, iface, method, result = STREAMS[self.service][stream]
+        if iface not in self._implemented:
+            return None
+        value = getattr(self._device, method)()
+        if value is None:
+            return None
+        if result == "image_rgb":
+            return encode_image(value)
+        out = Bottle()
+        for item in value if result.endswith("[]") else [value]:
+            encode(out, item, result[:-2] if result.endswith("[]") else result)
+        return out
+
     def command(self, message: Bottle) -> bool:
         """A message of the streaming command port, ([head...]) (values...), with no reply:
         the head is a request path without the service's command prefix. Returns whether the
@@ -309,6 +326,24 @@ class RpcClient:
             raise Error(f"{self.SERVICE} server speaks protocol {reply[1].as_int()}.{reply[2].as_int()}, "
                         f"this client speaks {protocol[2][0]}.{protocol[2][1]}")
         return []
+
+
+def encode_image(image: ImageRgb, quantum: int = 8) -> Bottle:
+    """A YARP 3 image: [mat] [rgb] (3 size quantum|1<<16 width height) {pixels}, rows padded to
+    `quantum` bytes (the same bytes as the C++ encode_image)."""
+    row = (image.width * 3 + quantum - 1) // quantum * quantum
+    packed = image.width * 3
+    pixels = bytearray(row * image.height)
+    for y in range(image.height):
+        pixels[y * row:y * row + packed] = image.pixels[y * packed:(y + 1) * packed]
+    b = Bottle()
+    b.add(Value.vocab(vocab("mat")))
+    b.add(Value.vocab(vocab("rgb")))
+    header = b.add_list()
+    for n in (3, len(pixels), quantum | (1 << 16), image.width, image.height):
+        header.add(Value.int32(n))
+    b.add(Value.blob(bytes(pixels)))
+    return b
 
 
 def _path(words: Sequence[str]) -> Bottle:

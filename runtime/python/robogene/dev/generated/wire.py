@@ -195,3 +195,9 @@ None,
 COMMANDS = {
     "controlboard": ("command:i", ("set", )),
 }
+
+# service -> {stream: (port, period in s, interface, method, result type)}
+STREAMS = {
+    "controlboard": {"state": ("state:o", 0.02, "IEncoders", "getEncoders", "float64[]")},
+    "grabber": {"image": ("image:o", 0.033, "IFrameGrabberImage", "getImage", "image_rgb")},
+}
