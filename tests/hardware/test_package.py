@@ -105,9 +105,14 @@ def test_renders_show_something(fab):
 def test_second_build_rebuilds_nothing(fab, tmp_path):
     stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and p.suffix in (".step", ".stl", ".svg", ".png", ".glb")}
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "mechanics"), str(REPO / "hardware" / "bom")]))
-    result = subprocess.run([sys.executable, "-m", "robogene_head.fab", "--out", str(fab)], capture_output=True, text=True,
-                            env=env, timeout=900)
+    # Same inputs as the build that made the package (make passes the board BOMs).
+    sources = json.loads((fab / "bom" / "sources.json").read_text())
+    boards = [arg for b in sources["board_boms"] for arg in ("--board-bom", f"{b['path']}:{b['copies']}")]
+    before = (fab / "bom" / "robogene-head-bom.csv").read_bytes()
+    result = subprocess.run([sys.executable, "-m", "robogene_head.fab", "--out", str(fab), "--batch", str(sources["batch"]),
+                             *boards], capture_output=True, text=True, env=env, timeout=900)
     assert result.returncode == 0, result.stderr[-3000:]
     assert "export" not in result.stderr.replace("exports", "")
     after = {p: p.stat().st_mtime_ns for p in stamp}
     assert after == stamp
+    assert (fab / "bom" / "robogene-head-bom.csv").read_bytes() == before
