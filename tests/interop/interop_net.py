@@ -29,14 +29,24 @@ def _port_free(port: int) -> bool:
     return True
 
 
+def _ephemeral_low() -> int:
+    try:
+        with open("/proc/sys/net/ipv4/ip_local_port_range") as f:
+            return int(f.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return 32768
+
+
 def free_port_block(width: int = 40) -> int:
-    """A base port P with P..P+width-1 free: a name server on P hands out P+2, P+3, ... to ports."""
+    """A base port P with P..P+width-1 free: a name server on P hands out P+2, P+3, ... to ports.
+    Chosen below the kernel's ephemeral range, so outgoing connections cannot take them meanwhile."""
     rng = random.Random()
+    top = min(_ephemeral_low(), 60000) - width
     for _ in range(200):
-        base = rng.randrange(20000, 60000 - width)
+        base = rng.randrange(20000, top)
         if all(_port_free(base + i) for i in range(width)):
             return base
-    raise RuntimeError("no free block of ports found between 20000 and 60000")
+    raise RuntimeError(f"no free block of {width} ports found between 20000 and {top + width}")
 
 
 @dataclass
