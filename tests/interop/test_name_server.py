@@ -102,3 +102,18 @@ def test_our_port_registers_on_yarpserver_and_unregisters_on_exit(yarpserver, ya
     reader.stop()
     assert not reader.running()
     interop_net.wait_unregistered(net.ns_port, "/interop/or", 10)
+
+
+def test_yarp_clean_against_our_name_server(procs, net):
+    """`yarp clean` lists the ports, probes each, unregisters the dead ones and asks for gc."""
+    RobogeneTools(procs, net).server()
+    yarp = YarpTools(procs, net)
+    yarp.read("/interop/alive")
+    dead_port = net.ns_port + 30          # inside our free block, nobody listens there
+    assert yarp.cmd("name", "register", "/interop/dead", "tcp", "127.0.0.1", str(dead_port)).returncode == 0
+    done = yarp.cmd("clean", "--timeout", "2", timeout=60)
+    assert done.returncode == 0, done
+    assert "* No response, removing port /interop/dead" in done.stdout.decode()
+    listed = yarp.cmd("name", "list").stdout.decode()
+    assert "registration name /interop/alive ip 127.0.0.1" in listed
+    assert "/interop/dead" not in listed
