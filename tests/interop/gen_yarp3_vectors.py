@@ -29,7 +29,7 @@ from yarp_sniffer import Sniffer  # noqa: E402
 DATA_COMMAND = b"\x00\x00\x00\x00~D\x00\x01"   # PortCommand 'D': data, no reply
 
 
-def typed_cases(yarp):
+def typed_cases():
     """(name, builder) for values only the typed API can make."""
     def one(method, *args):
         def build(b):
@@ -73,7 +73,7 @@ def typed_cases(yarp):
     ]
 
 
-def capture(yarp, port, sniffer, bottle) -> str:
+def capture(port, sniffer, bottle) -> str:
     port.write(bottle)
     msg = sniffer.next()
     if msg.command != DATA_COMMAND:
@@ -112,15 +112,15 @@ def main() -> int:
                 b = yarp.Bottle()
                 b.fromString(text)
                 bottles.append({"name": name, "text": text, "canonical_text": b.toString(),
-                                "hex": capture(yarp, port, sniffer, b), "source": source})
+                                "hex": capture(port, sniffer, b), "source": source})
 
             typed_source = f"yarp {version} Bottle typed add* calls/toString, bytes captured from yarp.Port.write over tcp"
             typed = []
-            for name, build in typed_cases(yarp):
+            for name, build in typed_cases():
                 b = yarp.Bottle()
                 build(b)
                 typed.append({"name": name, "canonical_text": b.toString(),
-                              "hex": capture(yarp, port, sniffer, b), "source": typed_source})
+                              "hex": capture(port, sniffer, b), "source": typed_source})
             port.close()
             yarp.Network.fini()
         finally:

@@ -113,15 +113,6 @@ class Proc:
     def running(self) -> bool:
         return self._popen.poll() is None
 
-    def wait_exit(self, timeout: float) -> int:
-        try:
-            rc = self._popen.wait(timeout)
-        except subprocess.TimeoutExpired:
-            raise AssertionError(f"{self.name} did not exit within {timeout:.1f} s\n{self.describe()}") from None
-        for t in self._readers:
-            t.join(2)
-        return rc
-
     def stop(self, grace: float = 5.0) -> None:
         """SIGTERM (YARP tools then unregister their ports), SIGKILL after the grace period."""
         if self._popen.poll() is None:

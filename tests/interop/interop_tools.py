@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import subprocess
 from pathlib import Path
-from typing import Sequence
 
 import interop_net as net_
 from interop_peer import PrivateNetwork, robogene_bin, yarp_python, yarp_tool, yarpdev
@@ -52,6 +51,10 @@ class YarpTools:
 
     def rpc(self, target: str) -> Proc:
         return self._start(f"yarp rpc {target}", [yarp_tool("yarp"), "rpc", target])
+
+    def admin_rpc(self, target: str) -> Proc:
+        """`yarp admin rpc`: requests go to the port itself as administrative messages ('a')."""
+        return self._start(f"yarp admin rpc {target}", [yarp_tool("yarp"), "admin", "rpc", target])
 
     def python(self, name: str, script: str, *args: str) -> Proc:
         """A script of tests/interop run by the peer's interpreter (with the SWIG `yarp` module)."""
@@ -105,13 +108,3 @@ class RobogeneTools:
     def cmd(self, *args: str, timeout: float = 20.0, stdin: str = "") -> subprocess.CompletedProcess:
         return run([self.bin, *args], self.net.env, timeout, stdin)
 
-
-def lines(completed: subprocess.CompletedProcess) -> list[str]:
-    return [l.rstrip("\r") for l in completed.stdout.decode("utf-8", "backslashreplace").splitlines()]
-
-
-def expect_ok(completed: subprocess.CompletedProcess, what: Sequence[str] | str = "") -> subprocess.CompletedProcess:
-    assert completed.returncode == 0, (
-        f"{' '.join(map(str, completed.args))} exited {completed.returncode}\n"
-        f"stdout: {completed.stdout!r}\nstderr: {completed.stderr!r}")
-    return completed

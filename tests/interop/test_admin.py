@@ -5,7 +5,6 @@ ports must answer exactly as YARP's own ports in the same situation (a writer co
 import pytest
 
 import interop_net
-from interop_peer import yarp_tool
 
 pytestmark = pytest.mark.timeout(120)
 
@@ -13,7 +12,7 @@ REQUESTS = ["[ver]", "[list] [out]", "[list] [in]", "[list] [out] /R", "[list] [
 
 
 def ask(yarp, port, requests):
-    client = yarp._start(f"yarp admin rpc {port}", [yarp_tool("yarp"), "admin", "rpc", port])
+    client = yarp.admin_rpc(port)
     answers = []
     for request in requests:
         client.send(request)

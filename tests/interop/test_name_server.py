@@ -35,7 +35,7 @@ def tools_for(kind, procs, net):
     return YarpTools(procs, net) if kind == "yarp" else RobogeneTools(procs, net)
 
 
-def run_script(client, server_port_of_a=None):
+def run_script(client):
     """Run SCRIPT; returns [(command, exit status, stdout)] with the server-chosen port of /interop/a
     replaced by <auto> (after checking it is the same number everywhere it appears)."""
     out = []

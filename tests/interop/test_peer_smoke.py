@@ -5,16 +5,12 @@ fixtures and the committed vectors before any of our code is involved."""
 import pytest
 
 import interop_net
+from interop_cases import by_name
 
 pytestmark = pytest.mark.timeout(90)
 
 STREAM_CASES = ["capture_sniff_yarp_write", "capture_types", "list_mixed", "vocab_reply", "blob_bytes",
                 "float_tenth", "int64_min", "string_escaped_quote_backslash"]
-
-
-def by_name(vectors, names):
-    table = {v["name"]: v for v in vectors}
-    return [table[n] for n in names]
 
 
 def test_yarpserver_answers_queries_for_itself(yarpserver, net):
