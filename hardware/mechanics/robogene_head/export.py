@@ -19,7 +19,6 @@ ANGULAR_TOLERANCE = 0.2   # rad
 
 def shape_hash(shape: cq.Shape, *extra: str) -> str:
     """A content hash of the exact B-rep (plus any extra labels): equal geometry -> equal hash."""
-    import io
     import os
     import tempfile
     fd, tmp = tempfile.mkstemp(suffix=".brep")

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import joint_config, kinematics, massprops, openscad, render, urdf
+from . import freecad, joint_config, kinematics, massprops, openscad, render, urdf
 from .assembly import Assembly
 from .cache import Cache, digest
 from .checks import interference, mesh, validity
@@ -160,7 +160,6 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         cache.record("interference", geometry_key)
 
     # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
-    from . import freecad
     step_files = [out / "step" / f"{d['design']}.step" for d in summary] + [asm_out[0]]
     expected = {d["design"]: d["volume_mm3"] for d in summary}
     expected["robogene_head"] = round(sum(p.local.Volume() for p in parts), 3)

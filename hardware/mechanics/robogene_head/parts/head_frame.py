@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters
-from . import mounts, purchased
+from . import mounts, neck, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -56,14 +56,14 @@ def build(params: HeadParameters) -> list[Part]:
         purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame", loc(tx, -hw - 1, tz, rx=90)),
     ]
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
-    pw = params.geometry("pulleys").num("width")
     yaw_gear = params.purchased(params.drive("neck_yaw").text("gearhead"))
     parts.append(Part("neck_yaw_motor_mount", "motor_mount_neck_yaw", "head_frame", "machined",
                       mounts.mount_plate(28, 28, 3, 8, yaw_gear.num("diameter")), loc(ym, 0, 0), **al))
     parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, 3))
     yaw_teeth = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True))
     parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_gear.num('shaft_diameter'):g}", "head_frame",
-                      "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")), loc(ym, 0, -12), **al))
+                      "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")),
+                      loc(ym, 0, -neck.yaw_pulley_drop(params)), **al))
     # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside, motor held by a clamp.
     tilt_gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
     tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))

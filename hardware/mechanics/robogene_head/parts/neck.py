@@ -128,21 +128,26 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
                        geom.cyl("x", 6, bl / 2 - 1, x_out), geom.cyl("x", 6, -x_out, -bl / 2 + 1),
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, -x_out + gear.num("shaft_length") - 4))
-    pw = params.geometry("pulleys").num("width")
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
-             mounts.pulley(params, teeth, shaft), loc(z=zy - 12), material="aluminium-6082", color=ALUMINIUM),
+             mounts.pulley(params, teeth, shaft), loc(z=zy - yaw_pulley_drop(params)), material="aluminium-6082",
+             color=ALUMINIUM),
     ]
 
 
+def yaw_pulley_drop(params: HeadParameters) -> float:
+    """Depth of the yaw pulleys' lower face below the yaw joint frame: 1 mm under the head floor."""
+    return params.geometry("head", "floor").num("thickness") + 1 + params.geometry("pulleys").num("width", positive=True)
+
+
 def build(params: HeadParameters) -> list[Part]:
-    # The yaw pulleys (head frame z -12..-6) hang between the roll stage and the head floor.
+    # The yaw pulleys hang between the roll stage and the head floor.
     zy = params.joints["neck_yaw"].origin[2]
     top = params.geometry("neck_roll_stage", "body").num("height") / 2
-    if zy - 12 - top < params.geometry("clearances").num("minimum"):
+    if zy - yaw_pulley_drop(params) - top < params.geometry("clearances").num("minimum"):
         raise ParameterError(f"{params.path}: joints.neck_yaw.origin[2]: {zy} leaves no room for the yaw pulleys "
                              f"above the roll stage (top at {top})")
     return _base(params) + _pitch_stage(params) + _roll_stage(params)
