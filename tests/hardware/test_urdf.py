@@ -162,3 +162,30 @@ def test_urdf_meshes_exist_and_load(urdf, fab):
         path = fab / "urdf" / link.find("visual/geometry/mesh").get("filename")
         mesh = trimesh.load(str(path), force="mesh")
         assert len(mesh.faces) > 0, name
+
+
+def test_a_parameter_change_travels_to_cad_and_urdf(params, tmp_path):
+    """Move the eye-tilt axis in the parameter file: the regenerated URDF and the rebuilt CAD agree again."""
+    import yaml
+    from robogene_head import massprops, urdf as urdf_gen
+    from robogene_head.assembly import Assembly
+    from robogene_head.params import load
+
+    data = yaml.safe_load(params.path.read_text())
+    data["joints"]["eyes_tilt"]["origin"] = [55, 0, 84]
+    path = tmp_path / "moved.yaml"
+    path.write_text(yaml.safe_dump(data))
+    moved = load(path)
+    assembly = Assembly(moved)
+    (tmp_path / "head.urdf").write_text(urdf_gen.generate(moved, massprops.link_props(moved, assembly.parts)))
+    model = Urdf(tmp_path / "head.urdf")
+    assert np.allclose(model.joints["eyes_tilt"]["xyz"], [55, 0, 84])
+    pose = SAMPLE_POSES[3]
+    frames = model.fk(kinematics.chain_angles(moved, pose))
+    placed = {p.part.name: p for p in assembly.pose(pose)}
+    for name in AXIS_PARTS["eyes_tilt"] + AXIS_PARTS["left_eye_pan"]:
+        j = model.joints["eyes_tilt" if name in AXIS_PARTS["eyes_tilt"] else "left_eye_pan"]
+        f = frames[j["child"]]
+        o, d = f[:3, 3], f[:3, :3] @ j["axis"]
+        assert any(abs(abs(np.dot(a, d)) - 1) < 1e-9 and _line_distance(p, o, d) < 1e-6
+                   for p, a, r in _cylinder_axes(placed[name].shape)), name
