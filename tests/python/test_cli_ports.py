@@ -222,3 +222,18 @@ def test_commands_without_a_server(cli, yarp_env):
         r = cli(*argv, "--server", f"127.0.0.1:{free}", input="")
         assert r.returncode == 1, (argv, r)
         assert f"127.0.0.1:{free}" in r.stderr, (argv, r.stderr)
+
+
+def test_read_envelope_option_prints_the_stamp(name_server, procs, robogene_bin, yarp_env, cli):
+    reader = start_read(procs, robogene_bin, yarp_env, "/r", "--envelope")
+    port = int(ok(cli("name", "query", "/r")).split()[6])
+    with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
+        s.sendall(b"YA\xe4\x1e\0\0RP" + struct.pack("<i", 5) + b"/env\0")
+        assert s.recv(8)[:2] == b"YA"
+        command = b"D 1053 1795328338.10597\0"
+        header = struct.pack("<i", len(command)) + b"~\0\0\1" + command  # state:o's envelope form
+        payload = robogene.Bottle.from_text("1.0 2.0 3.0 4.0").to_bytes()
+        s.sendall(b"YA\x0a\0\0\0RP\x02\x01" + b"\xff" * 8 + struct.pack("<iii", len(header), len(payload), 0)
+                  + header + payload)
+        assert s.recv(8) == b"YA\0\0\0\0RP"
+    reader.wait_for_line(r"^1053 1795328338\.10597 \| 1\.0 2\.0 3\.0 4\.0$")
