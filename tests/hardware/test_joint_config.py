@@ -19,6 +19,7 @@ def test_reductions_include_the_belts(params):
     assert j["left_eye_pan"]["motor_counts_per_joint_degree"] == pytest.approx(4 * 512 * 43 / 360)
     assert "joint_encoder" not in j["left_eye_pan"]
     assert [c["name"] for c in cfg["control_board"]] == list(P.CONTROL_JOINTS)
+    assert cfg["couplings"]["neck_pitch+neck_roll"]["type"] == "none"   # serial neck: one motor per joint
 
 
 def test_a_parameter_change_travels_to_the_config(tmp_path):

@@ -163,6 +163,9 @@ def draw(entry):
         where = "; ".join("(" + ", ".join(f"{v:g}" for v in p) + ")" for p in positions[:3])
         more = f" +{len(positions) - 3}" if len(positions) > 3 else ""
         out.append(f'<text x="155" y="{y:.1f}" class="s">&#216;{d:g}  x{len(positions)}  along {axis}  at {where}{more}</text>')
+    if entry.get("note"):
+        out.append(f'<text x="155" y="{y + 7:.1f}" class="h">NOTE</text>')
+        out.append(f'<text x="155" y="{y + 11.5:.1f}" class="s">{entry["note"]}</text>')
     bb = shape.BoundBox
     block = [f"Robogene head  |  {entry['name']}",
              f"material: {entry['material']}   mass: {shape.Volume * entry['density'] * 1e-9 * 1000:.1f} g",

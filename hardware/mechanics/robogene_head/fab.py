@@ -167,12 +167,13 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     densities = params.root.node("materials")
     machined = [d["design"] for d in summary if d["kind"] == "machined"]
     materials = {d["design"]: (d["material"], densities.num(d["material"])) for d in summary if d["kind"] == "machined"}
-    fc_key = digest(geometry_key, sorted(expected.items()), machined, freecad.script_digest())
+    notes = {d: designs[d]["part"].note for d in machined if designs[d]["part"].note}
+    fc_key = digest(geometry_key, sorted(expected.items()), machined, sorted(notes.items()), freecad.script_digest())
     fc_out = [out / "reports" / "freecad-step-check.json"] + [out / "drawings" / f"{d}.svg" for d in machined]
     if not cache.fresh("freecad", fc_key, fc_out):
         progress.note(f"FreeCAD: re-open {len(step_files)} STEP files, draw {len(machined)} machined parts")
         try:
-            freecad.run(step_files, expected, machined, out, materials, solids)
+            freecad.run(step_files, expected, machined, out, materials, solids, notes)
         except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
             raise BuildError(str(exc)) from None
         cache.record("freecad", fc_key)

@@ -29,11 +29,12 @@ def executable() -> str:
 
 def run(step_files: list[Path], expected: dict[str, float], machined: list[str], out: Path,
         materials: dict[str, tuple[str, float]] | None = None, solids: dict[str, int] | None = None,
-        timeout: float = 600) -> dict:
+        notes: dict[str, str] | None = None, timeout: float = 600) -> dict:
     """expected: design -> volume (mm^3); the assembly STEP is checked against the sum of its parts'
     volumes, given under the key of its file stem. materials: design -> (name, density kg/m^3)."""
     materials = materials or {}
     solids = solids or {}
+    notes = notes or {}
     report = out / "reports" / "freecad-step-check.json"
     report.parent.mkdir(parents=True, exist_ok=True)
     (out / "drawings").mkdir(parents=True, exist_ok=True)
@@ -42,7 +43,7 @@ def run(step_files: list[Path], expected: dict[str, float], machined: list[str],
         "steps": [{"file": str(p), "volume_mm3": expected[p.stem], "solids": solids.get(p.stem, 1)} for p in step_files],
         "drawings": [{"name": d, "step": str(out / "step" / f"{d}.step"), "out": str(out / "drawings" / f"{d}.svg"),
                       "material": materials.get(d, ("", 0))[0], "density": materials.get(d, ("", 0))[1],
-                      "licence": LICENCE} for d in machined],
+                      "licence": LICENCE, "note": notes.get(d, "")} for d in machined],
     }
     with tempfile.TemporaryDirectory() as home:
         job_path = Path(home) / "job.json"

@@ -40,6 +40,13 @@ def config(params: HeadParameters) -> dict:
         "source": params.path.name,
         "control_board": [{"index": i, "name": n, "min_deg": lo, "max_deg": hi}
                           for i, (n, (lo, hi)) in enumerate(params.control_limits.items())],
-        "eye_coupling": {"left_eye_pan": "version + vergence / 2", "right_eye_pan": "version - vergence / 2"},
+        # How control joints map to motors. The neck is serial (one motor per joint, no tendon differential),
+        # so pitch and roll need no decoupling; only the eyes are coupled.
+        "couplings": {
+            "neck_pitch+neck_roll": {"type": "none", "motors": ["neck_pitch", "neck_roll"]},
+            "eyes_version+eyes_vergence": {"type": "version-vergence", "motors": ["left_eye_pan", "right_eye_pan"],
+                                           "left_eye_pan": "version + vergence / 2",
+                                           "right_eye_pan": "version - vergence / 2"},
+        },
         "joints": joints,
     }

@@ -69,7 +69,7 @@ def build(params: HeadParameters) -> list[Part]:
     bore = tilt_bearing.num("bore")
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
                       mounts.pulley(params, teeth, bore), loc(0, hw + 1, 0, rx=-90),
-                      material="aluminium-6082", color=ALUMINIUM))
+                      material="aluminium-6082", color=ALUMINIUM, note=mounts.pulley_note(params, teeth, bore)))
     cup = eye_cup(params)
     cam_key = params.root.node("cameras").text("model")
     for side, sign in (("left", 1), ("right", -1)):

@@ -63,7 +63,8 @@ def build(params: HeadParameters) -> list[Part]:
     yaw_teeth = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True))
     parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_gear.num('shaft_diameter'):g}", "head_frame",
                       "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")),
-                      loc(ym, 0, -neck.yaw_pulley_drop(params)), **al))
+                      loc(ym, 0, -neck.yaw_pulley_drop(params)),
+                      note=mounts.pulley_note(params, yaw_teeth, yaw_gear.num("shaft_diameter")), **al))
     # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside, motor held by a clamp.
     tilt_gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
     tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))
@@ -71,7 +72,8 @@ def build(params: HeadParameters) -> list[Part]:
     tilt_teeth = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True))
     parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_gear.num('shaft_diameter'):g}",
                       "head_frame", "machined", mounts.pulley(params, tilt_teeth, tilt_gear.num("shaft_diameter")),
-                      loc(tmx, hw + 1, tmz, rx=-90), **al))
+                      loc(tmx, hw + 1, tmz, rx=-90),
+                      note=mounts.pulley_note(params, tilt_teeth, tilt_gear.num("shaft_diameter")), **al))
     y_motor = inner - tilt_gear.num("length") - tilt_motor.num("length") / 2
     clamp = geom.cut(geom.box(x0 + bt, tmx + 10, y_motor - 5, y_motor + 5, tmz - 12, tmz + 12),
                      geom.cyl("y", tilt_motor.num("diameter"), y_motor - 6, y_motor + 6, (tmx, tmz)))

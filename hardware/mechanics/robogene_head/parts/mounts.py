@@ -58,3 +58,9 @@ def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
         teeth = belt_teeth(params, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
         out.append((f"mxl-belt-{teeth}T", joint, teeth))
     return out
+
+
+def pulley_note(params: HeadParameters, teeth: int, bore: float) -> str:
+    """What the drawing of a pulley must say: its teeth are not modelled."""
+    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7; "
+            f"teeth not drawn: MXL profile")

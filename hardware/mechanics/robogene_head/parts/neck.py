@@ -134,7 +134,7 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
              mounts.pulley(params, teeth, shaft), loc(z=zy - yaw_pulley_drop(params)), material="aluminium-6082",
-             color=ALUMINIUM),
+             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft)),
     ]
 
 
