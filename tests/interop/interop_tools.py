@@ -2,11 +2,12 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Starting the command-line tools of both implementations on a private network.
 
-YARP's tools log to stderr (`Receiving input from /w to /r using tcp`, ...); our CLI's log format is
-not a contract, so readiness of our side is always observed from outside: name-server queries, the
-YARP peer's own log, or admin `[list] [out]`."""
+A port is ready once it logs `Port /x active at ...` (YARP 3.5 on stdout, our CLI on stderr): both
+register their name before they listen. Connections are observed from outside: the YARP peer's own
+log (`Receiving input from /w to /r using tcp`) or admin `[list] [out]`."""
 from __future__ import annotations
 
+import re
 import subprocess
 from pathlib import Path
 
@@ -37,14 +38,18 @@ class YarpTools:
     def _start(self, name: str, argv: list, cwd=None) -> Proc:
         return self.procs.start(name, LINE_BUFFERED + argv, self.net.env, cwd, YARP_LOG)
 
+    def _wait_active(self, proc: Proc, port: str, timeout: float = START_TIMEOUT) -> None:
+        """YARP registers a port before it listens; `Port /x active at ...` comes once it listens."""
+        proc.wait_output(rf"Port {re.escape(port)} active at ", timeout)
+
     def read(self, port: str, *extra: str) -> Proc:
         proc = self._start(f"yarp read {port}", [yarp_tool("yarp"), "read", port, *extra])
-        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        self._wait_active(proc, port)
         return proc
 
     def write(self, port: str, *targets: str) -> Proc:
         proc = self._start(f"yarp write {port}", [yarp_tool("yarp"), "write", port, *targets])
-        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        self._wait_active(proc, port)
         for target in targets:
             proc.wait_output(rf"Sending output from {port} to {target} using", START_TIMEOUT)
         return proc
@@ -63,14 +68,15 @@ class YarpTools:
     def echo_server(self, port: str) -> Proc:
         proc = self.python(f"yarp echo {port}", "yarp_echo_server.py", port)
         proc.wait_output(r"^ready$", START_TIMEOUT, "stdout")
-        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        self._wait_active(proc, port)
         return proc
 
     def fake_motors(self, name: str = "/motors", joints: int = 4) -> Proc:
         """yarpdev serving fakeMotionControl through controlboardwrapper2 (the 3.5 network wrapper)."""
         proc = self.dev("--device", "controlboardwrapper2", "--subdevice", "fakeMotionControl",
                         "--name", name, "--GENERAL::Joints", str(joints))
-        net_.wait_registered(self.net.ns_port, f"{name}/rpc:i", 30)
+        for suffix in ("rpc:i", "command:i", "state:o", "stateExt:o"):
+            self._wait_active(proc, f"{name}/{suffix}", 30)
         return proc
 
     def dev(self, *args: str) -> Proc:
@@ -85,6 +91,12 @@ class RobogeneTools:
         self.procs, self.net = procs, net
         self.bin = robogene_bin()
 
+    def _wait_active(self, proc: Proc, port: str) -> None:
+        """Like YARP, our ports register before they listen and log `Port /x active at ...` once
+        they do (on stderr); registration alone would race with the first connection."""
+        proc.wait_output(rf"Port {re.escape(port)} active at ", START_TIMEOUT)
+        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+
     def server(self) -> Proc:
         proc = self.procs.start("robogene server", [
             self.bin, "server", "--ip", "127.0.0.1", "--socket", str(self.net.ns_port), "--db", ":memory:"],
@@ -94,12 +106,12 @@ class RobogeneTools:
 
     def read(self, port: str, *sources: str) -> Proc:
         proc = self.procs.start(f"robogene read {port}", [self.bin, "read", port, *sources], self.net.env)
-        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        self._wait_active(proc, port)
         return proc
 
     def write(self, port: str, *targets: str) -> Proc:
         proc = self.procs.start(f"robogene write {port}", [self.bin, "write", port, *targets], self.net.env)
-        net_.wait_registered(self.net.ns_port, port, START_TIMEOUT)
+        self._wait_active(proc, port)
         return proc
 
     def rpc(self, target: str, *extra: str) -> Proc:

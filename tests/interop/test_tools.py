@@ -56,6 +56,7 @@ def test_robogene_read_pulls_from_a_yarp_writer(yarpserver, yarp, ours):
     writer = yarp.write("/interop/yw")
     reader = ours.read("/interop/or", "/interop/yw")
     writer.wait_output(r"Sending output from /interop/yw to /interop/or using tcp", 15)
+    interop_net.wait_connection(yarp.net.ns_port, "/interop/yw", "/interop/or")
     writer.send('[set] [pos] 1 30.5 "x y"')
     assert reader.wait_data(1, 10) == ['[set] [pos] 1 30.5 "x y"']
 
@@ -64,6 +65,9 @@ def test_yarp_read_pulls_from_our_writer(yarpserver, yarp, ours):
     writer = ours.write("/interop/ow")
     reader = yarp.read("/interop/yr", "/interop/ow")
     reader.wait_output(r"Receiving input from /interop/ow to /interop/yr using tcp", 15)
+    # The reader logs the input as soon as the handshake is done, a moment before our writer has
+    # finished the admin [add] and counts the connection among its outputs.
+    interop_net.wait_connection(yarp.net.ns_port, "/interop/ow", "/interop/yr")
     writer.send("(1 2.5) {7 8}")
     assert reader.wait_data(1, 10) == ["(1 2.5) {7 8}"]
 
