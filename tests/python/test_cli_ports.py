@@ -237,3 +237,13 @@ def test_read_envelope_option_prints_the_stamp(name_server, procs, robogene_bin,
                   + header + payload)
         assert s.recv(8) == b"YA\0\0\0\0RP"
     reader.wait_for_line(r"^1053 1795328338\.10597 \| 1\.0 2\.0 3\.0 4\.0$")
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_write_interrupted_unregisters(name_server, procs, robogene_bin, yarp_env, cli, sig):
+    writer = procs.start("write /w", [robogene_bin, "write", "/w"], yarp_env)
+    writer.wait_for_line(r"Port /w active", stream="err")
+    assert "/w" in ok(cli("name", "query", "/w"))
+    writer.signal(sig)
+    assert writer.wait_exit() == 0
+    assert cli("name", "query", "/w").returncode == 1
