@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "robogene/error.hpp"
+#include "robogene/net/tcp_listener.hpp"
 
 namespace robogene::name {
 namespace {
@@ -45,6 +46,18 @@ Bottle bottle_of_strings(std::initializer_list<std::string> items) {
   Bottle b;
   for (const auto& s : items) b.add(Value::string(s));
   return b;
+}
+
+// Whether a port could listen on host:port right now. Only answerable for this machine's loopback
+// or the server's own address; elsewhere every number is assumed usable.
+bool bindable(const std::string& host, const std::string& server_host, int port) {
+  if (host.compare(0, 4, "127.") != 0 && host != "localhost" && host != server_host) return true;
+  try {
+    net::TcpListener::listen(net::Endpoint{host, port}, 1);
+    return true;
+  } catch (const Error&) {
+    return false;  // in use by another program (or its connections): hand out another number
+  }
 }
 
 }  // namespace
@@ -364,7 +377,8 @@ NameReply NameService::cmd_register(const Request& r) {
   if (port == 0) {
     // A re-registration may keep its own number: free it first by forgetting the old entry.
     registry_.remove(name);
-    port = registry_.allocate_port(name, config_.port + config_.first_offset, config_.port + config_.last_offset);
+    port = registry_.allocate_port(name, config_.port + config_.first_offset, config_.port + config_.last_offset,
+                                   [&](int n) { return bindable(host, config_.host, n); });
   }
   Registration reg;
   reg.name = name;

@@ -257,7 +257,7 @@ void Registry::set_counter(const char* key, long long value) {
   Statement(db_, "INSERT OR REPLACE INTO meta (key, value) VALUES (?1, ?2)").bind(1, std::string(key)).bind(2, value).step();
 }
 
-int Registry::allocate_port(const std::string& name, int lo, int hi) {
+int Registry::allocate_port(const std::string& name, int lo, int hi, const std::function<bool(int)>& usable) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (lo > hi) throw Error("name server: empty port range " + std::to_string(lo) + ".." + std::to_string(hi));
   std::set<long long> held;
@@ -270,14 +270,16 @@ int Registry::allocate_port(const std::string& name, int lo, int hi) {
     s.bind(1, name);
     if (s.step()) {
       long long p = s.integer(0);
-      if (p >= lo && p <= hi && !held.count(p)) return static_cast<int>(p);
+      if (p >= lo && p <= hi && !held.count(p) && (!usable || usable(static_cast<int>(p)))) {
+        return static_cast<int>(p);
+      }
     }
   }
   long long last = counter("last_port", lo - 1);
   long long span = static_cast<long long>(hi) - lo + 1;
   for (long long i = 1; i <= span; ++i) {
     long long candidate = lo + ((last - lo + i) % span + span) % span;
-    if (!held.count(candidate)) {
+    if (!held.count(candidate) && (!usable || usable(static_cast<int>(candidate)))) {
       set_counter("last_port", candidate);
       return static_cast<int>(candidate);
     }

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "robogene/net/tcp_listener.hpp"
+
 #include <map>
 #include <set>
 #include <string>
@@ -255,4 +257,15 @@ TEST(NameServiceRestart, RegistrationsSurviveAndRootMovesToTheNewAddress) {
             "registration name /kept ip 127.0.0.1 port 12000 type tcp\r\n*** end of message\r\n");
   EXPECT_EQ(second.apply(Bottle::from_text("query /root"), "127.0.0.1").to_text_wire(),
             "registration name /root ip 127.0.0.1 port 10500 type tcp\r\n*** end of message\r\n");
+}
+
+TEST(NameServiceAllocation, SkipsANumberAnotherProgramIsListeningOn) {
+  robogene::net::TcpListener busy = robogene::net::TcpListener::listen({"127.0.0.1", 0});
+  Registry db(":memory:");
+  NameServiceConfig config;
+  config.port = busy.local().port - 2;  // the first number handed out would be the busy one
+  NameService service(db, config, nullptr);
+  std::string reply = service.apply(Bottle::from_text("register /x"), "127.0.0.1").to_text_wire();
+  EXPECT_EQ(reply.find("port " + std::to_string(busy.local().port) + " "), std::string::npos) << reply;
+  EXPECT_NE(reply.find("registration name /x ip 127.0.0.1 port "), std::string::npos) << reply;
 }

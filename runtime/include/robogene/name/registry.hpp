@@ -6,6 +6,7 @@
 // file; every method is safe to call from several threads.
 #pragma once
 
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -49,8 +50,9 @@ class Registry {
 
   // Port number for `name` in [lo, hi]: the number it had last time if no registration holds it
   // now, else the next free one after the last number handed out (wrapping). Throws
-  // robogene::Error when every number in the range is held.
-  int allocate_port(const std::string& name, int lo, int hi);
+  // robogene::Error when every number in the range is held. `usable`, when given, can veto a
+  // number (e.g. one some other program on this machine is using).
+  int allocate_port(const std::string& name, int lo, int hi, const std::function<bool(int)>& usable = {});
   // A fresh name "/tmp/port/N" not held by any registration.
   std::string allocate_name();
   // A multicast group "224.1.x.y" not held by any mcast registration.
