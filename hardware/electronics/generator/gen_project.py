@@ -14,8 +14,10 @@ import design
 NET_CLASSES = [
     # name, track width, clearance, via diameter, via drill, nets
     ("Default", 0.25, 0.2, 0.6, 0.3, []),
-    ("Power", 0.8, 0.25, 0.8, 0.4, ["+12V", "VIN_RAW", "VIN_FUSED", "SW_5V", "M1_OUT1", "M1_OUT2", "M1_MA",
-                                    "M2_OUT1", "M2_OUT2", "M2_MA"]),
+    # local-label nets carry the root sheet's "/" prefix
+    ("Power", 0.8, 0.2, 0.8, 0.4, ["+12V", "/VIN_RAW", "/VIN_FUSED", "/SW_5V", "/M1_OUT2", "/M2_OUT2"]),
+    # the shunt side of the motor path also lands on the current amplifier's 0.65 mm-pitch pins
+    ("Motor", 0.45, 0.2, 0.8, 0.4, ["/M1_OUT1", "/M1_MA", "/M2_OUT1", "/M2_MA"]),
     ("Supply", 0.4, 0.2, 0.6, 0.3, ["+5V", "+3V3"]),
 ]
 

@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Access to KiCad's installed symbol libraries: flattened symbols and their pin positions."""
 import copy
+import functools
 import os
 
 from sexpr import Sym, find, find1, parse
@@ -9,27 +10,46 @@ from sexpr import Sym, find, find1, parse
 SYMBOL_DIR = os.environ.get("KICAD9_SYMBOL_DIR", "/usr/share/kicad/symbols")
 FOOTPRINT_DIR = os.environ.get("KICAD9_FOOTPRINT_DIR", "/usr/share/kicad/footprints")
 
-_libs = {}
+_texts = {}
+_symbols = {}
 
 
-def _library(name):
-    if name not in _libs:
+def _library_text(name):
+    if name not in _texts:
         path = os.path.join(SYMBOL_DIR, name + ".kicad_sym")
         if not os.path.exists(path):
             raise FileNotFoundError(f"symbol library {name!r} not found at {path} (is kicad-symbols installed?)")
         with open(path, encoding="utf-8") as f:
-            _libs[name] = parse(f.read(), path)
-    return _libs[name]
+            _texts[name] = (path, f.read())
+    return _texts[name]
 
 
 def _raw_symbol(lib, name):
-    for s in find(_library(lib), "symbol"):
-        if s[1] == name:
-            return s
-    raise KeyError(f"symbol {name!r} not in library {lib!r}")
+    """Parse just one top-level symbol: the big libraries (MCUs) take seconds to parse whole."""
+    key = (lib, name)
+    if key not in _symbols:
+        path, text = _library_text(lib)
+        start = text.find(f'\n\t(symbol "{name}"\n')
+        if start < 0:
+            raise KeyError(f"symbol {name!r} not in library {lib!r} ({path})")
+        end = text.find("\n\t(symbol \"", start + 1)
+        if end < 0:
+            end = text.rindex("\n)")
+        line = text.count("\n", 0, start) + 2
+        _symbols[key] = parse(text[start:end], f"{path} (symbol {name} at line {line})")
+    return _symbols[key]
+
+
+@functools.lru_cache(maxsize=None)
+def _flattened(lib_id):
+    return flattened_symbol_uncached(lib_id)
 
 
 def flattened_symbol(lib_id):
+    return copy.deepcopy(_flattened(lib_id))
+
+
+def flattened_symbol_uncached(lib_id):
     """The symbol as KiCad embeds it in a schematic's lib_symbols: derived symbols resolved, named lib:name."""
     lib, name = lib_id.split(":", 1)
     sym = copy.deepcopy(_raw_symbol(lib, name))
@@ -58,7 +78,16 @@ def flattened_symbol(lib_id):
     return sym
 
 
+@functools.lru_cache(maxsize=None)
+def _pins(lib_id):
+    return tuple(_pin_list(lib_id))
+
+
 def pins(lib_id):
+    return list(_pins(lib_id))
+
+
+def _pin_list(lib_id):
     """[(number, name, electrical type, x, y, angle)] in symbol coordinates (y up)."""
     out = []
     for unit in find(flattened_symbol(lib_id), "symbol"):

@@ -1,0 +1,255 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Build the unrouted board (.kicad_pcb) from the schematic's netlist, the way pcbnew's
+"Update PCB from Schematic" does: footprints from KiCad's libraries, schematic links, nets.
+
+Placement: connectors, ICs and mounting holes sit at fixed positions (ANCHORS); every other part is
+placed by a deterministic search for the free spot nearest to the pads it connects to.
+Layers: F.Cu signals, In1.Cu GND plane, In2.Cu +12V plane, B.Cu signals. Run with KiCad's python:
+    /usr/bin/python3 gen_board.py NETLIST.net OUT.kicad_pcb
+"""
+import math
+import os
+import sys
+
+import pcbnew
+
+from sexpr import find, find1, parse
+from kicad_lib import FOOTPRINT_DIR
+
+W, H = 90.0, 60.0           # board size, mm
+OX, OY = 100.0, 100.0       # board origin on the KiCad canvas
+EDGE_MARGIN = 0.6           # courtyard to board edge
+GAP = 0.3                   # courtyard to courtyard
+
+# ref: (x, y, rotation degrees) relative to the board's top-left corner
+ANCHORS = {
+    "H1": (4.2, 4.2, 0), "H2": (W - 4.2, 4.2, 0), "H3": (4.2, H - 4.2, 0), "H4": (W - 4.2, H - 4.2, 0),
+    "J1": (5.0, 17.0, 90), "J2": (4.0, 37.0, 90), "J3": (4.0, 48.0, 90), "JP1": (12.5, 49.0, 0),
+    "U4": (17.0, 40.0, 0), "Q1": (22.0, 12.0, 0), "F1": (15.0, 8.0, 0), "D1": (15.0, 17.0, 0),
+    "U2": (33.0, 8.0, 0), "L1": (40.0, 8.0, 0), "U3": (48.0, 8.0, 0), "J4": (58.0, 2.5, 0),
+    "U1": (44.0, 31.0, 0), "Y1": (34.0, 29.5, 0),
+    "U5": (68.0, 15.0, 0), "U6": (68.0, 24.5, 0), "J20": (84.0, 18.0, 90),
+    "U7": (68.0, 37.0, 0), "U8": (68.0, 46.5, 0), "J30": (84.0, 40.0, 90),
+    "J21": (22.0, 55.0, 0), "J22": (34.0, 55.0, 0), "J31": (49.0, 55.0, 0), "J32": (61.0, 55.0, 0),
+}
+POWER_NETS = {"GND", "+12V", "+3V3", "+5V"}
+# Parts joined to the rest only by supply nets (decoupling, bulk) go next to the part they serve.
+NEAR = {"C1": "Q1", "R1": "Q1", "D2": "Q1", "C3": "U2", "C4": "U2", "C5": "L1", "C6": "L1", "C7": "U3",
+        "C8": "U3", "C9": "U1", "C10": "U1", "C11": "U1", "C12": "U1", "C16": "U4", "D4": "U4",
+        "C30": "U5", "C31": "U5", "C32": "U6", "C40": "U7", "C41": "U7", "C42": "U8", "R6": "JP1"}
+
+
+def mm(v):
+    return pcbnew.FromMM(v)
+
+
+def pt(x, y):
+    return pcbnew.VECTOR2I(mm(OX + x), mm(OY + y))
+
+
+def read_netlist(path):
+    with open(path, encoding="utf-8") as f:
+        root = parse(f.read(), path)
+    comps = []
+    for c in find(find1(root, "components"), "comp"):
+        fields = {f[1][1]: (f[2] if len(f) > 2 else "") for f in find(find1(c, "fields") or [], "field")}
+        comps.append({"ref": find1(c, "ref")[1], "value": find1(c, "value")[1],
+                      "footprint": find1(c, "footprint")[1], "fields": fields,
+                      "tstamp": find1(c, "tstamps")[1], "sheetfile": find1(find1(c, "sheetpath"), "names")[1],
+                      "excluded": any(p[1][1] in ("exclude_from_bom", "exclude_from_board")
+                                      for p in find(c, "property") if len(p) > 1 and isinstance(p[1], list))})
+    nets = {}
+    for n in find(find1(root, "nets"), "net"):
+        name = find1(n, "name")[1]
+        for node in find(n, "node"):
+            nets.setdefault(name, []).append((find1(node, "ref")[1], find1(node, "pin")[1]))
+    return comps, nets
+
+
+def load_footprint(lib_id):
+    lib, name = lib_id.split(":")
+    fp = pcbnew.FootprintLoad(os.path.join(FOOTPRINT_DIR, lib + ".pretty"), name)
+    if fp is None:
+        raise FileNotFoundError(f"footprint {lib_id} not found under {FOOTPRINT_DIR}")
+    fp.SetFPIDAsString(lib_id)
+    return fp
+
+
+def courtyard(fp):
+    bb = fp.GetCourtyard(pcbnew.F_CrtYd).BBox()
+    if bb.GetWidth() == 0:
+        bb = fp.GetBoundingBox(False)
+    return (bb.GetX() / 1e6 - OX, bb.GetY() / 1e6 - OY,
+            (bb.GetX() + bb.GetWidth()) / 1e6 - OX, (bb.GetY() + bb.GetHeight()) / 1e6 - OY)
+
+
+def _overlaps(a, b):
+    return not (a[2] + GAP <= b[0] or b[2] + GAP <= a[0] or a[3] + GAP <= b[1] or b[3] + GAP <= a[1])
+
+
+def _inside(a):
+    return a[0] >= EDGE_MARGIN and a[1] >= EDGE_MARGIN and a[2] <= W - EDGE_MARGIN and a[3] <= H - EDGE_MARGIN
+
+
+def place_free(fp, target, boxes):
+    """Nearest free position to `target` on a 0.5 mm grid (ring search), rotations 0 and 90."""
+    tx, ty = round(target[0] * 2) / 2, round(target[1] * 2) / 2
+    for ring in range(0, 200):
+        cands = []
+        for i in range(-ring, ring + 1):
+            for j in range(-ring, ring + 1):
+                if max(abs(i), abs(j)) != ring:
+                    continue
+                cands.append((math.hypot(i, j), i, j))
+        for _, i, j in sorted(cands):
+            for rot in (0, 90):
+                fp.SetOrientationDegrees(rot)
+                fp.SetPosition(pt(tx + i * 0.5, ty + j * 0.5))
+                box = courtyard(fp)
+                if _inside(box) and not any(_overlaps(box, b) for b in boxes):
+                    return box
+    raise RuntimeError(f"no free spot for {fp.GetReference()} near {target}")
+
+
+def add_outline(board):
+    corners = [(0, 0), (W, 0), (W, H), (0, H)]
+    for (x0, y0), (x1, y1) in zip(corners, corners[1:] + corners[:1]):
+        seg = pcbnew.PCB_SHAPE(board, pcbnew.SHAPE_T_SEGMENT)
+        seg.SetStart(pt(x0, y0))
+        seg.SetEnd(pt(x1, y1))
+        seg.SetLayer(pcbnew.Edge_Cuts)
+        seg.SetWidth(mm(0.1))
+        board.Add(seg)
+
+
+def add_zone(board, net, layer, priority=0):
+    zone = pcbnew.ZONE(board)
+    zone.SetLayer(layer)
+    zone.SetNet(net)
+    zone.SetAssignedPriority(priority)
+    zone.SetLocalClearance(mm(0.3))
+    zone.SetMinThickness(mm(0.25))
+    zone.SetThermalReliefGap(mm(0.4))
+    zone.SetThermalReliefSpokeWidth(mm(0.5))
+    zone.SetIslandRemovalMode(pcbnew.ISLAND_REMOVAL_MODE_ALWAYS)
+    outline = zone.Outline()
+    outline.NewOutline()
+    for x, y in [(0.5, 0.5), (W - 0.5, 0.5), (W - 0.5, H - 0.5), (0.5, H - 0.5)]:
+        outline.Append(mm(OX + x), mm(OY + y))
+    board.Add(zone)
+    return zone
+
+
+def build(netlist, out):
+    comps, nets = read_netlist(netlist)
+    board = pcbnew.NewBoard(out)
+    board.SetCopperLayerCount(4)
+    netinfo = {}
+    for name in sorted(nets):
+        ni = pcbnew.NETINFO_ITEM(board, name)
+        board.Add(ni)
+        netinfo[name] = ni
+    pad_net = {(r, p): n for n, nodes in nets.items() for r, p in nodes}
+
+    fps = {}
+    for c in comps:
+        fp = load_footprint(c["footprint"])
+        fp.SetReference(c["ref"])
+        fp.SetValue(c["value"])
+        for key in ("MPN", "Manufacturer"):
+            if c["fields"].get(key):
+                fp.SetField(key, c["fields"][key])
+                fp.GetFieldByName(key).SetVisible(False)
+        # Designators live on the fabrication layer (F.Fab) only: at this density silkscreen
+        # references would overlap pads and each other.
+        fp.Reference().SetVisible(False)
+        fp.SetPath(pcbnew.KIID_PATH("/" + c["tstamp"]))
+        fp.SetSheetname("/")
+        fp.SetSheetfile(c["sheetfile"] if c["sheetfile"].endswith(".kicad_sch") else os.path.basename(out).replace(".kicad_pcb", ".kicad_sch"))
+        for pad in fp.Pads():
+            net = pad_net.get((c["ref"], pad.GetNumber()))
+            if net:
+                pad.SetNet(netinfo[net])
+        board.Add(fp)
+        fps[c["ref"]] = fp
+
+    boxes, problems = [], []
+    for ref, (x, y, rot) in ANCHORS.items():
+        fp = fps[ref]
+        fp.SetOrientationDegrees(rot)
+        fp.SetPosition(pt(x, y))
+        box = courtyard(fp)
+        problems += [f"anchored {ref} overlaps {o} ({_fmt(box)} / {_fmt(b)})" for o, b in boxes if _overlaps(box, b)]
+        if not _inside(box):
+            problems.append(f"anchored {ref} leaves the board: {_fmt(box)}")
+        boxes.append((ref, box))
+    if problems:
+        raise RuntimeError("placement:\n  " + "\n  ".join(problems))
+
+    placed = set(ANCHORS)
+    pending = sorted(r for r in fps if r not in placed)
+    while pending:
+        # Next: the part with most signal links to what is already placed (then the biggest), so
+        # chains like MCU pin -> resistor -> LED are placed link by link, each near its neighbour.
+        ref = max(pending, key=lambda r: (_links(r, fps, placed, pad_net), _area(fps[r]), _refkey(r)))
+        pending.remove(ref)
+        target = _target(ref, fps, placed, pad_net)
+        box = place_free(fps[ref], target, [b for _, b in boxes])
+        boxes.append((ref, box))
+        placed.add(ref)
+
+    add_outline(board)
+    add_zone(board, netinfo["GND"], pcbnew.In1_Cu)
+    add_zone(board, netinfo["+12V"], pcbnew.In2_Cu)
+    board.BuildConnectivity()
+    pcbnew.SaveBoard(out, board)
+    return board
+
+
+def _fmt(box):
+    return "x %.2f..%.2f y %.2f..%.2f" % (box[0], box[2], box[1], box[3])
+
+
+def _area(fp):
+    b = courtyard(fp)
+    return (b[2] - b[0]) * (b[3] - b[1])
+
+
+def _refkey(ref):
+    head = ref.rstrip("0123456789")
+    return head, -int(ref[len(head):] or 0)
+
+
+def _links(ref, fps, placed, pad_net):
+    if NEAR.get(ref) in placed:
+        return 1000  # decoupling first, right beside its host
+    mine = {pad_net.get((ref, p.GetNumber())) for p in fps[ref].Pads()} - {None} - POWER_NETS
+    return sum(1 for other in placed for p in fps[other].Pads() if pad_net.get((other, p.GetNumber())) in mine)
+
+
+def _target(ref, fps, placed, pad_net):
+    """Centre of the placed pads that share a net with this part (signal nets count 4x)."""
+    pts = []
+    mine = {pad_net.get((ref, p.GetNumber())) for p in fps[ref].Pads()} - {None}
+    if ref in NEAR:
+        host = NEAR[ref]
+        placed = [host]
+        shared = [p for p in fps[host].Pads() if pad_net.get((host, p.GetNumber())) in mine]
+        if shared:
+            pos = [(p.GetPosition().x / 1e6 - OX, p.GetPosition().y / 1e6 - OY) for p in shared]
+            return (sum(p[0] for p in pos) / len(pos), sum(p[1] for p in pos) / len(pos))
+    for other in placed:
+        for pad in fps[other].Pads():
+            net = pad_net.get((other, pad.GetNumber()))
+            if net in mine and not net.startswith("unconnected"):
+                weight = 1 if net in POWER_NETS else 4
+                pos = pad.GetPosition()
+                pts += [(pos.x / 1e6 - OX, pos.y / 1e6 - OY)] * weight
+    if not pts:
+        return (W / 2, H / 2)
+    return (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
+
+
+if __name__ == "__main__":
+    build(sys.argv[1], sys.argv[2])

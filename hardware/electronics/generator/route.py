@@ -1,0 +1,80 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Route the placed board with Freerouting and pour the planes. Run with KiCad's python:
+    /usr/bin/python3 route.py BOARD.kicad_pcb WORKDIR JAVA CLASSPATH
+
+Steps: export Specctra DSN (pcbnew), restrict tracks to F.Cu/B.Cu so the GND and +12V
+planes on In1.Cu/In2.Cu stay whole (the router reaches them through vias), route single-threaded (Freerouting CLI), import
+the session, connect pads to the planes solidly, add a GND pour on B.Cu, fill every zone, save.
+"""
+import os
+import re
+import subprocess
+import sys
+
+import pcbnew
+
+import gen_board
+
+
+def export_dsn(board, path, layers):
+    if not pcbnew.ExportSpecctraDSN(board, path):
+        raise RuntimeError(f"pcbnew could not export {path}")
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    # Tracks only on the outer layers: the inner layers stay whole GND / +12V planes.
+    text, n = re.subn(r"\(circuit\n", "(circuit\n        (use_layer " + " ".join(layers) + ")\n", text)
+    if n == 0:
+        raise RuntimeError(f"{path}: no net class (circuit ...) section to restrict to the outer layers")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def run_freerouting(java, classpath, dsn, ses, workdir, passes=40):
+    cmd = [java, "-Djava.awt.headless=true", "-cp", classpath, "app.freerouting.Freerouting",
+           "--gui.enabled=false", f"--user_data_path={workdir}/freerouting-data",
+           "-de", dsn, "-do", ses, "-mp", str(passes), "-mt", "1"]
+    log = os.path.join(workdir, "freerouting.log")
+    with open(log, "w") as out:
+        rc = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT, timeout=1800).returncode
+    if rc != 0 or not os.path.exists(ses):
+        raise RuntimeError(f"freerouting failed (rc {rc}); see {log}")
+
+
+def finish(board):
+    for zone in board.Zones():
+        zone.SetPadConnection(pcbnew.ZONE_CONNECTION_FULL)
+    gnd = board.FindNet("GND")
+    for layer in (pcbnew.F_Cu, pcbnew.B_Cu):  # outer GND pours also stitch any plane the tracks cut
+        pour = gen_board.add_zone(board, gnd, layer)
+        pour.SetPadConnection(pcbnew.ZONE_CONNECTION_THERMAL)
+        pour.SetThermalReliefSpokeWidth(pcbnew.FromMM(0.4))
+        pour.SetMinThickness(pcbnew.FromMM(0.2))
+    pcbnew.ZONE_FILLER(board).Fill(board.Zones())
+
+
+def main(pcb, workdir, java, classpath, layers="F.Cu,B.Cu"):
+    """layers: where tracks may go. With In2.Cu among them, +12V is routed as tracks and its
+    plane is poured afterwards around the inner-layer signals."""
+    layers = layers.split(",")
+    all_layers = len(layers) == 4  # every layer routable: planes stay in the DSN as conduction areas
+    os.makedirs(workdir, exist_ok=True)
+    dsn, ses = os.path.join(workdir, "board.dsn"), os.path.join(workdir, "board.ses")
+    board = pcbnew.LoadBoard(pcb)
+    removed = []
+    for zone in list(board.Zones()):
+        if not all_layers and zone.GetLayer() in [board.GetLayerID(l) for l in layers]:
+            removed.append((zone.GetNet(), zone.GetLayer()))
+            board.Remove(zone)
+    export_dsn(board, dsn, layers)
+    run_freerouting(java, classpath, dsn, ses, workdir)
+    if not pcbnew.ImportSpecctraSES(board, ses):
+        raise RuntimeError(f"pcbnew could not import {ses}")
+    for net, layer in removed:
+        gen_board.add_zone(board, net, layer)
+    finish(board)
+    pcbnew.SaveBoard(pcb, board)
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:6])

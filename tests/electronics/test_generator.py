@@ -1,0 +1,66 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The committed schematic and project files are exactly what the generator writes from design.py."""
+import json
+
+import pytest
+
+import design
+import gen_project
+import gen_schematic
+from conftest import BOARD_DIR, NAME, SCH
+from sexpr import SexprError, parse
+
+
+def test_schematic_is_regenerated_byte_for_byte(tmp_path):
+    out = tmp_path / "x.kicad_sch"
+    gen_schematic.main(str(out))
+    assert out.read_bytes() == SCH.read_bytes(), "run hardware/electronics/generator/regenerate.sh and commit"
+
+
+def test_project_files_are_regenerated_byte_for_byte(tmp_path):
+    gen_project.main(str(tmp_path), NAME)
+    for name in ("sym-lib-table", "fp-lib-table", f"{NAME}.kicad_pro"):
+        assert (tmp_path / name).read_bytes() == (BOARD_DIR / name).read_bytes(), name
+
+
+def test_every_part_has_order_codes_and_a_library_footprint():
+    for part in design.parts():
+        lib, name = part.footprint.split(":")
+        assert (gen_project.used_libs()[1].count(lib)) == 1
+        if part.in_bom:
+            assert part.mpn and part.manufacturer, part.ref
+
+
+def test_net_classes_match_real_net_names():
+    nets = {n for p in design.parts() for n in p.pins.values() if n}
+    for cname, *_rest, members in gen_project.NET_CLASSES:
+        for pattern in members:
+            name = pattern.lstrip("/")
+            assert name in nets, f"net class {cname} names {pattern}, no such net"
+            assert pattern.startswith("/") == (name not in design.POWER_NETS), pattern
+
+
+def test_stacked_pins_with_different_nets_are_rejected():
+    bad = design.Part("U99", "Transistor_FET:DMP3013SFV", "x", "Package_SON:Diodes_PowerDI3333-8", "m", "m",
+                      {"1": "+12V", "2": "GND", "3": "+12V", "4": "G", "5": "D"}, "power")
+    with pytest.raises(ValueError, match=r"U99: stacked pins \['1', '2', '3'\]"):
+        gen_schematic.place(gen_schematic.Sheet(), bad, 0, 0)
+
+
+def test_a_pin_without_a_net_is_rejected():
+    bad = design.Part("R99", "Device:R", "1k", "Resistor_SMD:R_0603_1608Metric", "m", "m", {"1": "A"}, "power")
+    with pytest.raises(ValueError, match=r"R99: pin 2 \(~\) of Device:R has no net"):
+        gen_schematic.place(gen_schematic.Sheet(), bad, 0, 0)
+
+
+@pytest.mark.parametrize("text, where", [("(a (b c)", r"1 list\(s\) not closed"), ("(a))", "1:4: unbalanced"),
+                                         ("(a)\n (b)", "2:4: more than one top-level"), ("x", "1:1: atom outside")])
+def test_sexpr_errors_name_the_place(text, where):
+    with pytest.raises(SexprError, match=where):
+        parse(text, "t.kicad_sch")
+
+
+def test_project_json_is_loadable():
+    pro = json.loads((BOARD_DIR / f"{NAME}.kicad_pro").read_text())
+    assert {c["name"] for c in pro["net_settings"]["classes"]} == {"Default", "Power", "Motor", "Supply"}
