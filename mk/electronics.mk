@@ -53,7 +53,7 @@ electronics-route: $(ELEC_ROUTE)/.tools
 	hardware/electronics/generator/regenerate.sh --route $(ELEC_ROUTE)
 
 ALL_TARGETS  += electronics
-# test-electronics joins TEST_TARGETS once the routed board passes DRC
+TEST_TARGETS += test-electronics
 HELP_LINES   += "make electronics      build the motor-board fabrication package into build/fab/electronics" \
                 "make test-electronics KiCad ERC/DRC (schematic parity, no unconnected items) and output checks" \
                 "make electronics-route re-place and re-route the motor board (design time, Freerouting)"

@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """KiCad's own checks on the committed design: ERC, and DRC with schematic parity and no unconnected items."""
 import json
+import re
 
 from conftest import PCB, SCH
 
@@ -37,8 +38,14 @@ def test_drc_with_schematic_parity_is_clean(kicad_cli, tmp_path):
 def test_drc_exit_code_catches_a_broken_board(kicad_cli, tmp_path):
     """The gate can fail: the same board with one track removed must be reported as unconnected."""
     text = PCB.read_text()
-    start = text.index("\n\t(segment")
-    end = text.index("\n\t)", start) + 3
+    signal_nets = set(re.findall(r'^\t\(net (\d+) "/', text, re.M))
+    for m in re.finditer(r"\n\t\(segment\n.*?\n\t\)", text, re.S):
+        net = re.search(r"\(net (\d+)\)", m.group(0))
+        if net and net.group(1) in signal_nets:
+            start, end = m.span()
+            break
+    else:
+        raise AssertionError("no signal-net track segment found in the board file")
     broken = tmp_path / PCB.name
     broken.write_text(text[:start] + text[end:])
     for side in ("kicad_pro", "kicad_sch"):
