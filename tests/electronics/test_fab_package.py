@@ -111,6 +111,11 @@ def test_step_holds_the_board_and_every_available_component_model(fab):
     available = [m for m in models if not any(name in m for name in MODELS_NOT_IN_KICAD)]
     instances = text.count("NEXT_ASSEMBLY_USAGE_OCCURRENCE")
     assert instances == len(available) + 1, f"{instances} placed shapes, expected {len(available)} parts + the PCB"
+    # origin at the board centre: the 90 x 60 mm outline spans exactly +-45 / +-30 mm
+    pts = [tuple(map(float, m.groups())) for m in
+           re.finditer(r"CARTESIAN_POINT\('[^']*',\(([-\d.E+]+),([-\d.E+]+),([-\d.E+]+)\)\)", text)]
+    assert (min(p[0] for p in pts), max(p[0] for p in pts)) == (-45.0, 45.0)
+    assert (min(p[1] for p in pts), max(p[1] for p in pts)) == (-30.0, 30.0)
     for product in ("robogene-motor-board_PCB", "LQFP-32_7x7mm_P0.8mm", "SOIC-8_3.9x4.9mm_P1.27mm"):
         assert f"PRODUCT('{product}'" in text, product
 

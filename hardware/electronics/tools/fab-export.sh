@@ -26,7 +26,8 @@ kicad-cli sch export bom --fields 'Reference,Value,Footprint,MPN,Manufacturer,${
   --labels 'Reference,Value,Footprint,MPN,Manufacturer,Qty' --group-by 'Value,Footprint,MPN' \
   --exclude-dnp -o "$out/bom.csv" "$sch"
 kicad-cli sch export pdf -o "$out/schematic.pdf" "$sch"
-kicad-cli pcb export step --subst-models -f -D "KICAD9_3DMODEL_DIR=$models" -o "$out/board.step" "$pcb"
+# Origin at the board centre (145, 130 mm on the page), so the head assembly can place it directly.
+kicad-cli pcb export step --subst-models -f --user-origin 145x130mm -D "KICAD9_3DMODEL_DIR=$models" -o "$out/board.step" "$pcb"
 kicad-cli pcb render -D "KICAD9_3DMODEL_DIR=$models" --width 1600 --height 1100 --side top \
   --quality high --rotate '-35,0,25' --perspective -o "$out/render.png" "$pcb"
 echo "fab-export: package written to $out"
