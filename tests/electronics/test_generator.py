@@ -40,6 +40,13 @@ def test_project_files_are_regenerated(tmp_path):
         assert rules[key] == value, key
 
 
+def test_regenerating_over_the_committed_project_changes_nothing(tmp_path):
+    pro = f"{NAME}.kicad_pro"
+    (tmp_path / pro).write_bytes((BOARD_DIR / pro).read_bytes())
+    gen_project.main(str(tmp_path), NAME)
+    assert (tmp_path / pro).read_bytes() == (BOARD_DIR / pro).read_bytes()
+
+
 def test_every_part_has_order_codes_and_a_library_footprint():
     for part in design.parts():
         lib, name = part.footprint.split(":")

@@ -49,6 +49,7 @@ def project(name):
                         "bus_width": 12, "wire_width": 6, "line_style": 0,
                         "pcb_color": "rgba(0, 0, 0, 0.000)", "schematic_color": "rgba(0, 0, 0, 0.000)",
                         "priority": 2147483647 if cname == "Default" else len(classes)})
+    classes.sort(key=lambda c: c["name"])  # the order pcbnew writes them in
     patterns = [{"netclass": c[0], "pattern": n} for c in NET_CLASSES for n in c[5]]
     return {
         "board": {"design_settings": {
@@ -77,8 +78,26 @@ def main(out_dir, name):
         f.write(sym_table(sym))
     with open(os.path.join(out_dir, "fp-lib-table"), "w") as f:
         f.write(fp_table(fp))
-    with open(os.path.join(out_dir, name + ".kicad_pro"), "w") as f:
-        f.write(json.dumps(project(name), indent=2, sort_keys=True) + "\n")
+    path = os.path.join(out_dir, name + ".kicad_pro")
+    settings = project(name)
+    if os.path.exists(path):
+        # pcbnew rewrites the file with every setting spelled out; keep those and update ours.
+        with open(path) as f:
+            existing = json.load(f)
+        settings = _merge(existing, settings)
+    with open(path, "w") as f:
+        f.write(json.dumps(settings, indent=2, sort_keys=True) + "\n")
+
+
+def _merge(base, update):
+    """update's values win; dictionaries are merged key by key, everything else is replaced."""
+    out = dict(base)
+    for key, value in update.items():
+        if isinstance(value, dict) and isinstance(base.get(key), dict):
+            out[key] = _merge(base[key], value)
+        else:
+            out[key] = value
+    return out
 
 
 if __name__ == "__main__":
