@@ -40,6 +40,12 @@ def run_freerouting(java, classpath, dsn, ses, workdir, passes=40):
         rc = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT, timeout=1800).returncode
     if rc != 0 or not os.path.exists(ses):
         raise RuntimeError(f"freerouting failed (rc {rc}); see {log}")
+    with open(log) as f:
+        summary = [line for line in f if "session completed" in line]
+    left = re.search(r"\((\d+) unrouted\)", summary[-1]) if summary else None
+    if left:
+        # Freerouting is not fully repeatable from run to run: keep the committed board, try again.
+        raise RuntimeError(f"freerouting left {left.group(1)} connection(s) unrouted; board not saved (see {log})")
 
 
 def finish(board):
