@@ -28,5 +28,7 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 echo "apt-install: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${extra[@]}" "${missing[@]}"
+# Wait for another apt/dpkg (unattended upgrades, a parallel make) instead of failing on its lock.
+lock=(-o DPkg::Lock::Timeout=900)
+$sudo apt-get "${lock[@]}" update -qq
+$sudo apt-get "${lock[@]}" install -y -qq --no-install-recommends "${extra[@]}" "${missing[@]}"
