@@ -7,6 +7,8 @@
 #include <cmath>
 #include <thread>
 
+#include "robogene/dev/driver_registrar.hpp"
+
 namespace robogene::dev {
 namespace {
 
@@ -171,5 +173,7 @@ bool FakeGrabber::getMode(CameraFeature f, FeatureMode& mode) {
   mode = feat->mode;
   return true;
 }
+
+ROBOGENE_REGISTER_DRIVER(fake_grabber, "simulated camera: a moving RGB test pattern", FakeGrabber);
 
 }  // namespace robogene::dev

@@ -22,7 +22,7 @@
 #include "robogene/dev/generated/iframegrabbercontrols.hpp"
 #include "robogene/dev/generated/iframegrabberimage.hpp"
 #include "robogene/dev/simulation_clock.hpp"
-#include "sim_clock.hpp"
+#include "common/sim_clock.hpp"
 
 namespace robogene::dev {
 
@@ -31,8 +31,6 @@ class FakeGrabber final : public DeviceDriver,
                           public IFrameGrabberControls,
                           public ISimulationClock {
  public:
-  static std::unique_ptr<DeviceDriver> create() { return std::make_unique<FakeGrabber>(); }
-
   // Draws frame `n` of the pattern, before brightness and gain; shared with the tests.
   static void draw(ImageRgb& image, int width, int height, std::int64_t n);
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "robogene/dev/driver_registrar.hpp"
+
 namespace robogene::dev {
 namespace {
 
@@ -362,5 +364,8 @@ bool TestMotor::setControlModes(const std::vector<ControlMode>& modes) {
     return apply_mode(a, m, wanted);
   });
 }
+
+ROBOGENE_REGISTER_DRIVER(test_motor, "simulated control board: position and velocity moves, encoders",
+                         TestMotor);
 
 }  // namespace robogene::dev

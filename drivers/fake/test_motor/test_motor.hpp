@@ -21,7 +21,7 @@
 #include "robogene/dev/generated/ipositioncontrol.hpp"
 #include "robogene/dev/generated/ivelocitycontrol.hpp"
 #include "robogene/dev/simulation_clock.hpp"
-#include "sim_clock.hpp"
+#include "common/sim_clock.hpp"
 
 namespace robogene::dev {
 
@@ -32,8 +32,6 @@ class TestMotor final : public DeviceDriver,
                         public IControlMode,
                         public ISimulationClock {
  public:
-  static std::unique_ptr<DeviceDriver> create() { return std::make_unique<TestMotor>(); }
-
   bool open(const Searchable& config) override;
   bool close() override;
 

@@ -7,13 +7,9 @@
 namespace robogene::dev {
 
 DriverFactory& DriverFactory::instance() {
-  // Built-ins are added here rather than by static initialisers, which a static library's
-  // linker would drop.
-  static DriverFactory* factory = [] {
-    auto* f = new DriverFactory;  // never destroyed: devices may outlive static destructors
-    add_builtin_drivers(*f);
-    return f;
-  }();
+  // Never destroyed: devices may outlive static destructors. Built on first use, so the drivers'
+  // registrars may run in any order.
+  static DriverFactory* factory = new DriverFactory;
   return *factory;
 }
 

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // DriverFactory: the list of devices by symbolic name and how to create each (paper section 3.2).
-// instance() already knows the built-in drivers (test_motor, fake_grabber); programs may add more.
+// The drivers in drivers/ add themselves to instance() as the program starts
+// (ROBOGENE_REGISTER_DRIVER, robogene/dev/driver_registrar.hpp); programs may add more.
 #pragma once
 
 #include <functional>
@@ -39,8 +40,5 @@ class DriverFactory {
   mutable std::mutex mutex_;
   std::map<std::string, Entry> drivers_;
 };
-
-// Adds test_motor and fake_grabber; instance() calls it once.
-void add_builtin_drivers(DriverFactory& factory);
 
 }  // namespace robogene::dev
