@@ -53,10 +53,35 @@ def compile_files(paths: list[Path], schema: Path = DEFAULT_SCHEMA,
         else:
             docs.append(doc)
     idl = _Checker(errors).check(docs)
+    _check_can(docs, idl, errors, root)
     if errors:
         raise IdlErrors(errors)
-    idl.files = [d.file for d in docs]
+    # The device emitters name these as their sources; CAN files name themselves in their outputs.
+    idl.files = [d.file for d in docs if "can_protocol" not in d.data and "board_config" not in d.data]
     return idl
+
+
+def _check_can(docs: list[Document], idl: Idl, errors: list[IdlError], root: Optional[Path]) -> None:
+    """CAN protocols, then the board configurations that name them (and read the head's parameters)."""
+    from ..can.compiler import CanChecker
+    checker = CanChecker(errors)
+    for doc in docs:
+        if "can_protocol" in doc.data:
+            proto = checker.check(doc)
+            if proto is not None:
+                if any(p.name == proto.name for p in idl.can_protocols):
+                    errors.append(IdlError(proto.mark, f"duplicate CAN protocol '{proto.name}'"))
+                else:
+                    idl.can_protocols.append(proto)
+    configs = [doc for doc in docs if "board_config" in doc.data]
+    if not configs:
+        return
+    from ..can.board_config import BoardConfigChecker
+    boards = BoardConfigChecker(errors, root)
+    for doc in configs:
+        config = boards.check(doc, idl.can_protocols)
+        if config is not None:
+            idl.board_configs.append(config)
 
 
 def _vocab_text(path: tuple) -> str:

@@ -171,6 +171,8 @@ class Idl:
     enums: list[EnumType]
     structs: list[StructType]
     files: list[str]
+    can_protocols: list = field(default_factory=list)   # robogene_codegen.can.model.CanProtocol
+    board_configs: list = field(default_factory=list)   # robogene_codegen.can.board_config.BoardConfig
 
     def interface(self, name: str) -> Optional[Interface]:
         return next((i for i in self.interfaces if i.name == name), None)

@@ -12,7 +12,7 @@ import jsonschema
 from .errors import IdlError
 from .loader import Document
 
-KIND_KEYS = ("interface", "service", "types")
+KIND_KEYS = ("interface", "service", "types", "can_protocol", "board_config")
 
 
 @lru_cache(maxsize=4)
@@ -48,13 +48,18 @@ def _explain(doc: Document, err: jsonschema.ValidationError) -> list[IdlError]:
         kinds = [k for k in KIND_KEYS if k in err.instance]
         if len(kinds) != 1:
             return [IdlError(doc.mark(()), "a file describes exactly one of: an interface "
-                             "('interface:'), a service ('service:') or shared types ('types:'); "
+                             "('interface:'), a service ('service:'), shared types ('types:'), a CAN "
+                             "protocol ('can_protocol:') or a board configuration ('board_config:'); "
                              f"found {', '.join(kinds) or 'none'}")]
         needs = {"interface": ("interface", "version", "doc", "methods"),
                  "service": ("service", "version", "doc", "interfaces", "rpc_port"),
-                 "types": ("types",)}[kinds[0]]
+                 "types": ("types",),
+                 "can_protocol": ("can_protocol", "version", "doc", "protocol_version", "bitrate",
+                                  "id_layout", "addresses", "classes"),
+                 "board_config": ("board_config", "doc", "protocol", "parameters", "timeouts",
+                                  "broadcasts")}[kinds[0]]
         allowed_extra = {"interface": (), "service": ("protocol", "introspection", "streams", "command"),
-                         "types": ()}[kinds[0]]
+                         "types": (), "can_protocol": ("enums", "flags"), "board_config": ()}[kinds[0]]
         missing = [k for k in needs if k not in err.instance]
         if missing:
             return [IdlError(doc.mark(()), f"{kinds[0]} file is missing: {', '.join(missing)}")]
