@@ -8,6 +8,8 @@
 // YARP 3 request bottles through a transport (a port's RPC write, or any function that gets a
 // reply) and reading the replies, so user code cannot tell it from a local device (paper 3.4).
 // A request the server refuses ([fail], [nak], a malformed reply) makes the method return false.
+// Not final: a network device (remote_controlboard) derives from it to route some methods
+// through streams, as YARP's does.
 #pragma once
 
 #include <functional>
@@ -20,7 +22,7 @@
 
 namespace robogene::dev {
 
-class GrabberClient final : public IFrameGrabberImage, public IFrameGrabberControls {
+class GrabberClient : public IFrameGrabberImage, public IFrameGrabberControls {
  public:
   static constexpr const char* kServiceName = "grabber";
   // Sends `request`, fills `reply`; false when the exchange itself failed.
