@@ -1,0 +1,384 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""A `board_config:` IDL file: the head's boards on one CAN bus, checked against its protocol.
+
+The numbers come from the head parameter file it names (hardware/head-parameters.yaml, the single
+source of truth for the head): joint limits, reductions and encoders through the mechanics
+package's own reader (robogene_head.params and joint_config), and the `motor_control:` section
+(bus, board addresses, the joint on each axis, PID gains, speed and current limits) read here with
+source marks, so that a wrong value is reported as `file:line:column: error: <field>: what`.
+"""
+from __future__ import annotations
+
+import importlib
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Optional
+
+from ..idl.errors import IdlError, IdlErrors, Mark
+from ..idl.loader import Document, load
+from .model import CanProtocol, Message, scalar_range
+
+REPO_ROOT = Path(__file__).resolve().parents[3]
+COUPLING_VERSION_VERGENCE = "version_vergence"
+# The PID entries of motor_control.joints.<joint>, each checked against the field that carries it.
+PID_FIELDS = {"kp": ("set_position_pid", "kp"), "ki": ("set_position_pid", "ki"),
+              "kd": ("set_position_pid", "kd"), "shift": ("set_position_pid", "shift"),
+              "offset": ("set_position_pid_limits", "offset"),
+              "output_limit": ("set_position_pid_limits", "output_limit"),
+              "integral_limit": ("set_position_pid_limits", "integral_limit")}
+JOINT_KEYS = tuple(PID_FIELDS) + ("max_velocity", "current_limit")
+
+
+@dataclass
+class AxisConfig:
+    joint: str
+    index: int                  # position in the control board's joint order
+    board_address: int
+    axis: int                   # 0 or 1 on its board
+    min_deg: float
+    max_deg: float
+    counts_per_degree: float    # on the wire
+    motors: list[str]           # the physical joints (motors) that move it
+    reduction: float            # of its motor(s)
+    motor_encoder_lines: int
+    joint_encoder_bits: int     # 0: no absolute joint encoder
+    pid: dict[str, int]
+    max_velocity: float         # deg/s
+    current_limit: int          # mA
+
+    @property
+    def min_counts(self) -> int:
+        return round(self.min_deg * self.counts_per_degree)
+
+    @property
+    def max_counts(self) -> int:
+        return round(self.max_deg * self.counts_per_degree)
+
+    @property
+    def max_speed_counts(self) -> float:
+        return self.max_velocity * self.counts_per_degree
+
+
+@dataclass
+class Board:
+    name: str
+    address: int
+    axes: list[AxisConfig]
+    coupling: str               # "none" or "version_vergence"
+    motors: list[str]           # motor on output 0 and output 1
+
+    # Joint angles to motor angles and back (degrees). Version/vergence of the parameter file:
+    # left = version + vergence / 2, right = version - vergence / 2.
+    @property
+    def j2m(self) -> list[list[float]]:
+        return [[1, 0.5], [1, -0.5]] if self.coupling == COUPLING_VERSION_VERGENCE else [[1, 0], [0, 1]]
+
+    @property
+    def m2j(self) -> list[list[float]]:
+        return [[0.5, 0.5], [1, -1]] if self.coupling == COUPLING_VERSION_VERGENCE else [[1, 0], [0, 1]]
+
+    # Motor encoder counts to the axis counts on the wire: version = left + right, vergence = left - right.
+    @property
+    def counts_m2a(self) -> list[list[int]]:
+        return [[1, 1], [1, -1]] if self.coupling == COUPLING_VERSION_VERGENCE else [[1, 0], [0, 1]]
+
+
+@dataclass
+class BoardConfig:
+    name: str
+    doc: str
+    file: str
+    parameters_file: str
+    protocol: CanProtocol
+    device: str
+    bitrate: int
+    host_address: int
+    pwm_full_scale: int
+    control_period_us: int
+    reply_timeout_ms: int
+    velocity_timeout_ms: int
+    polling_interval_ms: int
+    broadcasts: list[Message]
+    boards: list[Board]
+    joints: list[AxisConfig] = field(default_factory=list)  # in control order
+
+    @property
+    def broadcast_mask(self) -> int:
+        return sum(1 << (m.code - 1) for m in self.broadcasts)
+
+    @property
+    def sources(self) -> list[str]:
+        return sorted({self.file, self.parameters_file, self.protocol.file})
+
+
+class _Fail(Exception):
+    pass
+
+
+class BoardConfigChecker:
+    def __init__(self, errors: list[IdlError], root: Optional[Path]):
+        self.errors = errors
+        self.root = Path(root) if root else REPO_ROOT
+
+    def check(self, doc: Document, protocols: list[CanProtocol]) -> Optional[BoardConfig]:
+        data = doc.data
+        proto = next((p for p in protocols if p.name == data["protocol"]), None)
+        if proto is None:
+            known = ", ".join(p.name for p in protocols) or "none"
+            self.errors.append(IdlError(doc.mark(("protocol",)), f"unknown CAN protocol "
+                                        f"'{data['protocol']}' (known: {known})"))
+            return None
+        broadcasts = []
+        for k, name in enumerate(data["broadcasts"]):
+            m = proto.message(name + "_broadcast")
+            if m is None:
+                known = ", ".join(b.name[:-len("_broadcast")] for b in proto.broadcasts)
+                self.errors.append(IdlError(doc.mark(("broadcasts", k)), f"unknown broadcast '{name}' "
+                                            f"(the {proto.name} protocol has: {known})"))
+                return None
+            broadcasts.append(m)
+        param_path = self.root / data["parameters"]
+        try:
+            param_name = str(param_path.resolve().relative_to(self.root.resolve()))
+        except ValueError:
+            param_name = str(param_path)
+        try:
+            text = param_path.read_text(encoding="utf-8")
+        except OSError as exc:
+            self.errors.append(IdlError(doc.mark(("parameters",)), f"cannot read the parameter file "
+                                        f"{param_name} ({exc.strerror})"))
+            return None
+        try:
+            params_doc = load(param_name, text)
+        except IdlErrors as exc:
+            self.errors.extend(exc.errors)
+            return None
+        before = len(self.errors)
+        try:
+            mechanics = self._mechanics(params_doc, param_path, param_name)
+            config = _Reader(self, params_doc, proto, mechanics).read(doc, broadcasts)
+        except _Fail:
+            return None
+        return config if len(self.errors) == before else None
+
+    def _mechanics(self, pdoc: Document, path: Path, name: str) -> dict:
+        """Limits, reductions and encoders as the mechanics package derives them."""
+        mech_dir = str(self.root / "hardware" / "mechanics")
+        if mech_dir not in sys.path:
+            sys.path.insert(0, mech_dir)
+        params_mod = importlib.import_module("robogene_head.params")
+        joint_config = importlib.import_module("robogene_head.joint_config")
+        try:
+            params = params_mod.parse(pdoc.data, name, path)
+            cfg = joint_config.config(params)
+            reductions = {j: joint_config.reduction(params, j) for j in params_mod.CHAIN_JOINTS}
+        except params_mod.ParameterError as exc:
+            message = str(exc)
+            where = message[len(name) + 2:] if message.startswith(name + ": ") else message
+            key = where.split(":", 1)[0]
+            self.errors.append(IdlError(pdoc.mark(_key_path(key)), where))
+            raise _Fail from None
+        return {"config": cfg, "reductions": reductions, "limits": params.control_limits}
+
+
+def _key_path(dotted: str) -> tuple:
+    """'control_joints[2].name' -> ('control_joints', 2, 'name')."""
+    path: list[Any] = []
+    for part in dotted.split("."):
+        m = re.fullmatch(r"([^\[\]]*)((?:\[\d+\])*)", part)
+        if not m:
+            return tuple(path)
+        if m.group(1):
+            path.append(m.group(1))
+        path += [int(i) for i in re.findall(r"\[(\d+)\]", m.group(2))]
+    return tuple(path)
+
+
+def _dotted(path: tuple) -> str:
+    out = ""
+    for p in path:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else p)
+    return out
+
+
+class _Reader:
+    """Reads motor_control from the parameter file; every error names the field and its place."""
+
+    def __init__(self, checker: BoardConfigChecker, pdoc: Document, proto: CanProtocol, mech: dict):
+        self.checker, self.pdoc, self.proto, self.mech = checker, pdoc, proto, mech
+
+    def fail(self, path: tuple, message: str) -> None:
+        self.checker.errors.append(IdlError(self.pdoc.mark(path), f"{_dotted(path)}: {message}"))
+
+    def get(self, path: tuple, kind: type, what: str) -> Any:
+        node: Any = self.pdoc.data
+        for i, key in enumerate(path):
+            ok = isinstance(node, dict) and key in node if isinstance(key, str) else \
+                isinstance(node, list) and key < len(node)
+            if not ok:
+                self.fail(path[:i + 1] if isinstance(node, (dict, list)) else path[:i],
+                          "missing" if isinstance(node, (dict, list)) else f"expected a mapping, got {node!r}")
+                raise _Fail
+            node = node[key]
+        if kind is float:
+            good = isinstance(node, (int, float)) and not isinstance(node, bool)
+        elif kind is int:
+            good = isinstance(node, int) and not isinstance(node, bool)
+        else:
+            good = isinstance(node, kind)
+        if not good:
+            self.fail(path, f"expected {what}, got {node!r}")
+            raise _Fail
+        return node
+
+    def fits(self, path: tuple, value: float, message: str, field_name: str, scale: float = 1.0) -> None:
+        """The raw wire value of `value` (in the field's unit) must fit the protocol field."""
+        f = next(f for f in self.proto.message(message).fields if f.name == field_name)
+        lo, hi = scalar_range(f.scalar)
+        raw = round((value - f.offset) / f.scale)
+        if not lo <= raw <= hi:
+            unit = f" {f.unit}" if f.unit else ""
+            self.fail(path, f"{value:g}{unit} does not fit {message}.{field_name} ({f.scalar}: "
+                      f"{lo * f.scale + f.offset:g}..{hi * f.scale + f.offset:g}{unit})")
+
+    def read(self, doc: Document, broadcasts: list[Message]) -> BoardConfig:
+        mc = ("motor_control",)
+        self.get(mc, dict, "a mapping")
+        device = self.get(mc + ("bus", "device"), str, "a CAN interface name")
+        bitrate = self.get(mc + ("bus", "bitrate"), int, "an integer (bit/s)")
+        host = self.get(mc + ("bus", "host_address"), int, "an integer address")
+        if bitrate != self.proto.bitrate:
+            self.fail(mc + ("bus", "bitrate"), f"{bitrate} differs from the {self.proto.name} protocol's "
+                      f"{self.proto.bitrate} bit/s ({self.proto.file})")
+        if host != self.proto.host:
+            self.fail(mc + ("bus", "host_address"), f"{host} differs from the {self.proto.name} protocol's "
+                      f"host address {self.proto.host}")
+        pwm = self.get(mc + ("pwm_full_scale",), int, "an integer")
+        period = self.get(mc + ("control_period_us",), int, "an integer (microseconds)")
+        for key, value in (("pwm_full_scale", pwm), ("control_period_us", period)):
+            if value <= 0:
+                self.fail(mc + (key,), f"must be > 0, got {value}")
+        axes = self._joints(mc, pwm)
+        boards = self._boards(mc, axes)
+        data = doc.data
+        t = data["timeouts"]
+        config = BoardConfig(
+            name=data["board_config"], doc=data["doc"], file=doc.file, parameters_file=self.pdoc.file,
+            protocol=self.proto, device=device, bitrate=bitrate, host_address=host, pwm_full_scale=pwm,
+            control_period_us=period, reply_timeout_ms=t["reply_ms"], velocity_timeout_ms=t["velocity_ms"],
+            polling_interval_ms=t["polling_interval_ms"], broadcasts=broadcasts, boards=boards,
+            joints=sorted(axes.values(), key=lambda a: a.index))
+        self.fits(mc + ("joints",), config.velocity_timeout_ms, "set_velocity_timeout", "timeout")
+        return config
+
+    def _joints(self, mc: tuple, pwm: int) -> dict[str, AxisConfig]:
+        cfg = self.mech["config"]
+        chain = {j["name"]: j for j in cfg["joints"]}
+        coupled = {c["motors"][0]: c for c in cfg["couplings"].values() if c["type"] == "version-vergence"}
+        joints_node = self.get(mc + ("joints",), dict, "a mapping of control joints")
+        order = [c["name"] for c in cfg["control_board"]]
+        for extra in sorted(set(joints_node) - set(order)):
+            self.fail(mc + ("joints", extra), f"unknown joint (the control joints are {', '.join(order)})")
+        axes = {}
+        for index, name in enumerate(order):
+            path = mc + ("joints", name)
+            entry = self.get(path, dict, "a mapping")
+            for extra in sorted(set(entry) - set(JOINT_KEYS)):
+                self.fail(path + (extra,), f"unknown key (allowed: {', '.join(JOINT_KEYS)})")
+            motors = [name] if name in chain else []
+            if not motors:  # a virtual eye joint: the two pan motors of the version/vergence coupling
+                c = next(iter(coupled.values()), None)
+                motors = list(c["motors"]) if c else []
+            if not motors:
+                self.fail(path, "no motor drives this joint in the parameter file")
+                raise _Fail
+            lines = {chain[m]["motor_encoder_lines"] for m in motors}
+            reductions = {self.mech["reductions"][m] for m in motors}
+            if len(lines) != 1 or len(reductions) != 1:
+                self.fail(path, f"the coupled motors {', '.join(motors)} need the same reduction and encoder "
+                          "(drives and purchased in the parameter file)")
+                raise _Fail
+            per_motor = 4 * lines.pop() * reductions.pop() / 360.0
+            # version = (L + R) / 2 travels as L + R counts, vergence = L - R as L - R counts.
+            counts = 2 * per_motor if name == "eyes_version" else per_motor
+            pid = {}
+            for key, (message, field_name) in PID_FIELDS.items():
+                pid[key] = self.get(path + (key,), int, "an integer")
+                self.fits(path + (key,), pid[key], message, field_name)
+            for key in ("output_limit", "integral_limit"):
+                if not 0 <= pid[key] <= pwm:
+                    self.fail(path + (key,), f"{pid[key]} is outside 0..pwm_full_scale ({pwm})")
+            max_velocity = float(self.get(path + ("max_velocity",), float, "a number (deg/s)"))
+            current = self.get(path + ("current_limit",), int, "an integer (mA)")
+            if max_velocity <= 0:
+                self.fail(path + ("max_velocity",), f"must be > 0, got {max_velocity:g}")
+            if current <= 0:
+                self.fail(path + ("current_limit",), f"must be > 0, got {current}")
+            self.fits(path + ("max_velocity",), max_velocity * counts, "set_max_velocity", "speed")
+            self.fits(path + ("current_limit",), current, "set_current_limit", "current")
+            lo, hi = self.mech["limits"][name]
+            first = chain.get(motors[0], {})
+            bits = first.get("joint_encoder", {}).get("bits", 0) if len(motors) == 1 else 0
+            axis = AxisConfig(name, index, 0, 0, lo, hi, counts, motors, self.mech["reductions"][motors[0]],
+                              chain[motors[0]]["motor_encoder_lines"], bits, pid, max_velocity, current)
+            for bound in (lo, hi):
+                self.fits(path, bound * counts, "set_min_position", "position")
+            axes[name] = axis
+        return axes
+
+    def _boards(self, mc: tuple, axes: dict[str, AxisConfig]) -> list[Board]:
+        names = self.get(("boards", "names"), list, "a list of board names")
+        raw = self.get(mc + ("boards",), list, "a list of boards")
+        if len(raw) != len(names):
+            self.fail(mc + ("boards",), f"lists {len(raw)} boards, boards.names lists {len(names)}")
+            raise _Fail
+        boards, used_addresses, placed = [], {}, {}
+        for i, expected in enumerate(names):
+            path = mc + ("boards", i)
+            name = self.get(path + ("name",), str, "a board name")
+            if name != expected:
+                self.fail(path + ("name",), f"expected '{expected}' (boards.names[{i}]), got '{name}'")
+            address = self.get(path + ("address",), int, "an integer address")
+            if not self.proto.first_board <= address <= self.proto.last_board:
+                self.fail(path + ("address",), f"{address} is not a board address "
+                          f"({self.proto.first_board}..{self.proto.last_board})")
+            elif address in used_addresses:
+                self.fail(path + ("address",), f"{address} is already the address of "
+                          f"'{used_addresses[address]}'")
+            used_addresses.setdefault(address, name)
+            joints = self.get(path + ("axes",), list, "a list of two joints")
+            if len(joints) != 2:
+                self.fail(path + ("axes",), f"a board drives 2 axes, got {len(joints)}")
+                continue
+            board_axes = []
+            for k, joint in enumerate(joints):
+                if joint not in axes:
+                    self.fail(path + ("axes", k), f"unknown joint '{joint}' (the control joints are "
+                              f"{', '.join(axes)})")
+                    continue
+                if joint in placed:
+                    self.fail(path + ("axes", k), f"'{joint}' is already on board '{placed[joint]}'")
+                    continue
+                placed[joint] = name
+                axes[joint].board_address, axes[joint].axis = address, k
+                board_axes.append(axes[joint])
+            if len(board_axes) != 2:
+                continue
+            motor_sets = [a.motors for a in board_axes]
+            if motor_sets[0] == motor_sets[1] and len(motor_sets[0]) == 2:
+                if [a.joint for a in board_axes] != ["eyes_version", "eyes_vergence"]:
+                    self.fail(path + ("axes",), "the coupled eye joints go on axes 0 and 1 in the order "
+                              "eyes_version, eyes_vergence")
+                boards.append(Board(name, address, board_axes, COUPLING_VERSION_VERGENCE, motor_sets[0]))
+            elif any(len(m) != 1 for m in motor_sets):
+                self.fail(path + ("axes",), "eyes_version and eyes_vergence share the two eye motors, so "
+                          "they must be on the same board")
+            else:
+                boards.append(Board(name, address, board_axes, "none", [m[0] for m in motor_sets]))
+        for joint in axes:
+            if joint not in placed:
+                self.fail(mc + ("boards",), f"no board drives '{joint}'")
+        return boards
