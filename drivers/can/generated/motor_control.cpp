@@ -22,7 +22,7 @@ namespace {
 
 // candump's compact form, for messages: "001#1BE80300001900".
 std::string frame_text(const Frame& f) {
-  char buf[4];
+  char buf[8];
   std::snprintf(buf, sizeof buf, "%03X", static_cast<unsigned>(f.id & 0x7FF));
   std::string s = std::string(buf) + "#";
   for (unsigned i = 0; i < f.len && i < kMaxDataLength; ++i) {

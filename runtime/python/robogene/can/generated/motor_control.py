@@ -974,6 +974,8 @@ def decode(frame: Frame) -> Envelope:
     except ValueError:
         raise CodecError(f"{text}: unknown message class {cls_value}") from None
     if cls in _ADDRESSED_BY_DESTINATION:
+        if not any(k[0] == cls for k in _COMMANDS):
+            raise CodecError(f"{text}: class {cls_value} ({cls.name.lower()}) carries no message of this protocol")
         if not data:
             raise CodecError(f"{text}: a {cls.name.lower()} frame starts with a command byte, this one is empty")
         code, axis, destination = data[0] & 0x7F, data[0] >> 7, low
@@ -983,8 +985,6 @@ def decode(frame: Frame) -> Envelope:
             request = _COMMANDS.get((cls, code, "request"))
             if request is not None:
                 raise CodecError(f"{text}: board {source} sent {request.NAME}, which has no reply")
-            if not any(k[0] == cls for k in _COMMANDS):
-                raise CodecError(f"{text}: class {cls_value} ({cls.name.lower()}) carries no message of this protocol")
             raise CodecError(f"{text}: unknown command {code} in class {cls_value} ({cls.name.lower()})")
     else:
         axis, destination = 0, BROADCAST_ADDRESS
