@@ -6,7 +6,7 @@
 
 CODEGEN := PYTHONPATH=$(ROOT)/codegen $(PY) -m robogene_codegen
 
-.PHONY: generate check-generated test-codegen
+.PHONY: generate check-generated test-codegen test-can-protocol
 generate: $(VENV)/.stamp
 	$(CODEGEN) generate
 
@@ -17,8 +17,19 @@ check-generated: $(VENV)/.stamp
 test-codegen: $(VENV)/.stamp python
 	$(PY) -m pytest -q -p no:cacheprovider tests/codegen
 
+# The CAN protocol and board configs (interfaces/idl/can_motor_control.yaml, head_boards.yaml): codec
+# vectors in C++ and Python, the DBC against cantools, the .ini through the runtime's Property reader,
+# the firmware headers through gcc. Needs cantools (pinned in tools/setup/requirements-can.txt).
+$(STAMPS)/py-can: tools/setup/requirements-can.txt $(VENV)/.stamp | $(STAMPS)
+	$(PY) -m pip install -q --disable-pip-version-check -r $<
+	touch $@
+
+test-can-protocol: $(STAMPS)/py-can
+	$(PY) -m pytest -q -p no:cacheprovider tests/can
+
 ALL_TARGETS  += check-generated
-TEST_TARGETS += check-generated test-codegen
+TEST_TARGETS += check-generated test-codegen test-can-protocol
 HELP_LINES   += "make generate   regenerate code and docs from interfaces/idl/" \
                 "make check-generated  fail if generated files are stale" \
-                "make test-codegen     run the IDL and codegen tests"
+                "make test-codegen     run the IDL and codegen tests" \
+                "make test-can-protocol  CAN codecs (C++ and Python), DBC, board configs"

@@ -1,0 +1,67 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""cantools loads the generated DBC and decodes a recorded candump session to the same values as
+our own decoder."""
+from pathlib import Path
+
+import pytest
+
+import cantools  # pinned in tools/setup/requirements-can.txt
+from cantools.logreader import Parser
+
+ROOT = Path(__file__).resolve().parents[2]
+DBC = ROOT / "drivers" / "can" / "generated" / "head.dbc"
+SESSION = Path(__file__).resolve().parent / "data" / "head-session.log"
+
+
+@pytest.fixture(scope="module")
+def db():
+    return cantools.database.load_file(str(DBC))  # strict: overlapping or oversized signals fail here
+
+
+def _expected(can, env) -> dict:
+    """Our decoder's values under the DBC's signal names (enums and flags as numbers)."""
+    m = env.message
+    values = {f.name: getattr(m, f.name) for f in m.FIELDS}
+    values = {k: (int(v) if not isinstance(v, float) else v) for k, v in values.items()}
+    if m.KIND == "broadcast":
+        return values
+    return {"command": m.CODE, "axis": env.axis, **{f"{m.NAME}_{k}": v for k, v in values.items()}}
+
+
+def test_dbc_describes_the_head_bus(db):
+    names = {m.name for m in db.messages}
+    for board in ("NECK_PITCH_ROLL", "NECK_YAW_EYES_TILT", "EYES_PAN"):
+        assert {f"HOST_TO_{board}", f"{board}_REPLY", f"{board}_POSITION", f"{board}_STATUS"} <= names
+    assert db.get_message_by_name("HOST_TO_EYES_PAN").frame_id == 0x003
+    assert db.get_message_by_name("EYES_PAN_REPLY").frame_id == 0x030
+    assert db.get_message_by_name("NECK_PITCH_ROLL_POSITION").frame_id == 0x111
+    speed = db.get_message_by_name("HOST_TO_EYES_PAN").get_signal_by_name("position_move_speed")
+    assert (speed.scale, speed.unit, speed.is_signed, speed.start, speed.length) == (10, "count/s", True, 40, 16)
+
+
+def test_session_decodes_alike(can, db):
+    frames = 0
+    kinds = set()
+    with SESSION.open() as log:
+        for entry in Parser(log):  # cantools' own candump reader
+            frame = can.Frame(entry.frame_id, bytes(entry.data))
+            env = can.decode(frame)
+            # A command identifier carries commands of every length, so the DBC message is 8 bytes
+            # long and shorter frames need allow_truncated.
+            decoded = db.decode_message(entry.frame_id, frame.data, decode_choices=False, allow_truncated=True)
+            assert decoded == _expected(can, env), str(frame)
+            frames += 1
+            kinds.add(env.message.NAME)
+        frames += 1
+        kinds.add(env.message.NAME)
+    assert frames > 300
+    assert {"position_move", "velocity_move", "position_broadcast", "status_broadcast",
+            "get_encoder_position_reply", "set_position_pid", "supply_broadcast"} <= kinds
+
+
+def test_named_values_match_enums(can, db):
+    decoded = db.decode_message(0x113, bytes.fromhex("080100A020200304"))
+    assert str(decoded["mode0"]) == "position" and str(decoded["mode1"]) == "hardware_fault"
+    decoded = db.decode_message(0x001, bytes.fromhex("8902"), allow_truncated=True)
+    assert str(decoded["command"]) == "set_control_mode" and str(decoded["set_control_mode_mode"]) == "velocity"
