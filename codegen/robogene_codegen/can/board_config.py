@@ -234,14 +234,16 @@ class _Reader:
             raise _Fail
         return node
 
-    def fits(self, path: tuple, value: float, message: str, field_name: str, scale: float = 1.0) -> None:
-        """The raw wire value of `value` (in the field's unit) must fit the protocol field."""
+    def fits(self, path: tuple, value: float, message: str, field_name: str, given: str = "") -> None:
+        """The raw wire value of `value` (in the field's unit) must fit the protocol field; `given`
+        says what the parameter file wrote when the value was converted from it."""
         f = next(f for f in self.proto.message(message).fields if f.name == field_name)
         lo, hi = scalar_range(f.scalar)
         raw = round((value - f.offset) / f.scale)
         if not lo <= raw <= hi:
             unit = f" {f.unit}" if f.unit else ""
-            self.fail(path, f"{value:g}{unit} does not fit {message}.{field_name} ({f.scalar}: "
+            what = f"{given} is {round(value)}{unit}, which" if given else f"{value:g}{unit}"
+            self.fail(path, f"{what} does not fit {message}.{field_name} ({f.scalar}: "
                       f"{lo * f.scale + f.offset:g}..{hi * f.scale + f.offset:g}{unit})")
 
     def read(self, doc: Document, broadcasts: list[Message]) -> BoardConfig:
@@ -271,7 +273,6 @@ class _Reader:
             control_period_us=period, reply_timeout_ms=t["reply_ms"], velocity_timeout_ms=t["velocity_ms"],
             polling_interval_ms=t["polling_interval_ms"], broadcasts=broadcasts, boards=boards,
             joints=sorted(axes.values(), key=lambda a: a.index))
-        self.fits(mc + ("joints",), config.velocity_timeout_ms, "set_velocity_timeout", "timeout")
         return config
 
     def _joints(self, mc: tuple, pwm: int) -> dict[str, AxisConfig]:
@@ -317,7 +318,8 @@ class _Reader:
                 self.fail(path + ("max_velocity",), f"must be > 0, got {max_velocity:g}")
             if current <= 0:
                 self.fail(path + ("current_limit",), f"must be > 0, got {current}")
-            self.fits(path + ("max_velocity",), max_velocity * counts, "set_max_velocity", "speed")
+            self.fits(path + ("max_velocity",), max_velocity * counts, "set_max_velocity", "speed",
+                      f"{max_velocity:g} deg/s")
             self.fits(path + ("current_limit",), current, "set_current_limit", "current")
             lo, hi = self.mech["limits"][name]
             first = chain.get(motors[0], {})
@@ -325,7 +327,7 @@ class _Reader:
             axis = AxisConfig(name, index, 0, 0, lo, hi, counts, motors, self.mech["reductions"][motors[0]],
                               chain[motors[0]]["motor_encoder_lines"], bits, pid, max_velocity, current)
             for bound in (lo, hi):
-                self.fits(path, bound * counts, "set_min_position", "position")
+                self.fits(path, bound * counts, "set_min_position", "position", f"the limit {bound:g} deg")
             axes[name] = axis
         return axes
 

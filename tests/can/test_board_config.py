@@ -1,0 +1,254 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The head's board configuration: generated from the head parameter file, read back by the runtime's
+own Property parser and by a C compiler, and a wrong parameter refused with the field it names."""
+import math
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import yaml
+
+from conftest import CC, ROOT
+from robogene_codegen.generate import render
+from robogene_codegen.idl import IdlErrors, compile_directory
+
+INI = ROOT / "drivers" / "can" / "config" / "head.ini"
+FIRMWARE = ROOT / "hardware" / "electronics" / "firmware"
+PARAMS = ROOT / "hardware" / "head-parameters.yaml"
+
+
+def _atoms(text: str):
+    """The bottle text form the Property tool prints: nested lists of numbers, words and strings."""
+    tokens = re.findall(r'\(|\)|"(?:[^"\\]|\\.)*"|[^\s()]+', text)
+    stack = [[]]
+    for t in tokens:
+        if t == "(":
+            stack.append([])
+        elif t == ")":
+            done = stack.pop()
+            stack[-1].append(done)
+        elif t.startswith('"'):
+            stack[-1].append(t[1:-1])
+        else:
+            try:
+                stack[-1].append(int(t))
+            except ValueError:
+                try:
+                    stack[-1].append(float(t))
+                except ValueError:
+                    stack[-1].append(t)
+    return stack[0]
+
+
+def _groups(items) -> dict:
+    """(group (key values...) ...) lists to {group: {key: [values]}}."""
+    out = {}
+    for g in items:
+        out[g[0]] = {entry[0]: entry[1:] for entry in g[1:]}
+    return out
+
+
+@pytest.fixture(scope="module")
+def ini(property_tool):
+    result = subprocess.run([str(property_tool), str(INI)], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    return _groups(_atoms(result.stdout))
+
+
+@pytest.fixture(scope="module")
+def config():
+    return compile_directory(ROOT / "interfaces" / "idl", root=ROOT).board_configs[0]
+
+
+@pytest.fixture(scope="module")
+def params():
+    return yaml.safe_load(PARAMS.read_text())
+
+
+def test_property_parser_reads_the_driver_config(ini, config, params):
+    can, general, limits, pids = ini["CAN"], ini["GENERAL"], ini["LIMITS"], ini["PIDS"]
+    assert can["device"] == ["can0"] and can["bitrate"] == [1000000] and can["host_address"] == [0]
+    assert can["board_addresses"] == [1, 2, 3]
+    assert can["protocol_fingerprint"] == [config.protocol.fingerprint]
+    assert can["broadcast_policy"] == [0x104D]  # position, status, current, velocity, supply: bits 0 2 3 6 12
+    assert general["axis_names"] == [j["name"] for j in params["control_joints"]]
+    assert general["board"] == [1, 1, 2, 2, 3, 3] and general["axis"] == [0, 1, 0, 1, 0, 1]
+    assert limits["min"] == [j["min"] for j in params["control_joints"]]
+    assert limits["max"] == [j["max"] for j in params["control_joints"]]
+    assert pids["kp"] == [params["motor_control"]["joints"][j]["kp"] for j in general["axis_names"]]
+    assert ini["VELOCITY"]["timeout_ms"] == [100]
+
+
+def test_reductions_and_encoders_come_from_the_parameter_file(ini, params):
+    general = ini["GENERAL"]
+    purchased, pulleys = params["purchased"], params["geometry"]["pulleys"]
+    gear = lambda joint: purchased[params["drives"][joint]["gearhead"]]["ratio"]  # noqa: E731
+    expected = [gear("neck_pitch"), gear("neck_roll"),
+                gear("neck_yaw") * pulleys["yaw"]["joint_teeth"] / pulleys["yaw"]["motor_teeth"],
+                gear("eyes_tilt") * pulleys["tilt"]["joint_teeth"] / pulleys["tilt"]["motor_teeth"],
+                gear("left_eye_pan"), gear("right_eye_pan")]
+    assert general["gear_ratio"] == pytest.approx(expected, rel=1e-12)
+    per_degree = [4 * 512 * r / 360 for r in expected]
+    per_degree[4] *= 2  # version travels as left + right motor counts
+    assert general["encoder"] == pytest.approx(per_degree, rel=1e-12)
+    assert general["joint_encoder_bits"] == [14, 14, 14, 14, 0, 0]
+    coupling = ini["COUPLING_3"]
+    assert coupling["type"] == ["version_vergence"] and coupling["joints"] == [4, 5]
+    assert coupling["motors"] == ["left_eye_pan", "right_eye_pan"]
+    assert coupling["j2m"] == [[1, 0.5], [1, -0.5]] and coupling["m2j"] == [[0.5, 0.5], [1, -1]]
+
+
+def test_firmware_headers_compile(build_dir):
+    if shutil.which(CC) is None:
+        pytest.fail(f"{CC} is needed to check the firmware headers")
+    for header in sorted(FIRMWARE.glob("*.h")):
+        unit = build_dir / f"include_{header.stem}.c"
+        unit.write_text(f'#include "{header.name}"\n#include "{header.name}"\ntypedef int translation_unit_is_not_empty;\n')
+        cmd = [CC, "-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Werror", "-fsyntax-only", f"-I{FIRMWARE}", str(unit)]
+        result = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+        assert result.returncode == 0, f"{header.name}:\n{result.stderr}"
+
+
+def test_firmware_table_matches_the_driver_config(build_dir, ini):
+    program = build_dir / "print_boards.c"
+    program.write_text("""
+#include <stdio.h>
+#include "robogene_head_board_config.h"
+int main(void) {
+  for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b) {
+    const robogene_board_config_t *c = robogene_board_config(robogene_board_configs[b].can_address);
+    for (int a = 0; a < 2; ++a) {
+      const robogene_axis_config_t *x = &c->axes[a];
+      printf("%s %u %d %d %d %ld %ld %d %d %d %u %.9g\\n", x->joint, c->can_address, a, (int)c->coupling,
+             x->kp, (long)x->min_position, (long)x->max_position, x->output_limit, (int)x->current_limit,
+             x->joint_encoder_bits, x->shift, x->counts_per_degree);
+    }
+  }
+  return robogene_board_config(9) == NULL ? 0 : 1;
+}
+""")
+    exe = build_dir / "print_boards"
+    cmd = [CC, "-std=c99", "-Wall", "-Wextra", "-Werror", f"-I{FIRMWARE}", str(program), "-o", str(exe)]
+    result = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    run = subprocess.run([str(exe)], capture_output=True, text=True, timeout=30)
+    assert run.returncode == 0
+    rows = {line.split()[0]: line.split()[1:] for line in run.stdout.splitlines()}
+    g, lim, pid = ini["GENERAL"], ini["LIMITS"], ini["PIDS"]
+    for i, joint in enumerate(g["axis_names"]):
+        addr, axis, coupling, kp, lo, hi, out_limit, current, bits, shift, cpd = rows[joint]
+        assert (int(addr), int(axis)) == (g["board"][i], g["axis"][i])
+        assert int(coupling) == (1 if joint.startswith("eyes_v") else 0)
+        assert int(kp) == pid["kp"][i] and int(out_limit) == pid["output_limit"][i] and int(shift) == pid["shift"][i]
+        assert int(lo) == round(lim["min"][i] * g["encoder"][i]) and int(hi) == round(lim["max"][i] * g["encoder"][i])
+        assert int(current) == lim["current"][i] and int(bits) == g["joint_encoder_bits"][i]
+        assert math.isclose(float(cpd), g["encoder"][i], rel_tol=1e-6)
+
+
+# ---- a wrong parameter file is refused, naming the field --------------------------------------
+
+@pytest.fixture
+def tree(tmp_path):
+    """A copy of what the board config reads: the IDL files, the schema and the parameter file."""
+    idl = tmp_path / "interfaces" / "idl"
+    idl.mkdir(parents=True)
+    for name in ("can_motor_control.yaml", "head_boards.yaml", "idl.schema.json"):
+        shutil.copy(ROOT / "interfaces" / "idl" / name, idl / name)
+    (tmp_path / "hardware").mkdir()
+    shutil.copy(PARAMS, tmp_path / "hardware" / "head-parameters.yaml")
+    (tmp_path / "hardware" / "mechanics").symlink_to(ROOT / "hardware" / "mechanics")
+    return tmp_path
+
+
+def _compile(tree):
+    return compile_directory(tree / "interfaces" / "idl", tree / "interfaces" / "idl" / "idl.schema.json", root=tree)
+
+
+def _errors(tree, old: str, new: str) -> tuple[list[str], str]:
+    path = tree / "hardware" / "head-parameters.yaml"
+    text = path.read_text()
+    assert text.count(old) == 1, old
+    text = text.replace(old, new)
+    path.write_text(text)
+    with pytest.raises(IdlErrors) as info:
+        _compile(tree)
+    return [str(e) for e in info.value.errors], text
+
+
+def _at(text: str, needle: str, skip: int = 0) -> str:
+    at = text.index(needle) + skip
+    return f"hardware/head-parameters.yaml:{text.count(chr(10), 0, at) + 1}:{at - text.rfind(chr(10), 0, at)}"
+
+
+def test_the_copy_compiles(tree):
+    assert [b.address for b in _compile(tree).board_configs[0].boards] == [1, 2, 3]
+
+
+def test_gain_that_does_not_fit_its_field(tree):
+    errs, text = _errors(tree, "neck_yaw:      {kp: 66,", "neck_yaw:      {kp: 40000,")
+    assert errs == [f"{_at(text, '40000')}: error: motor_control.joints.neck_yaw.kp: 40000 does not fit "
+                    "set_position_pid.kp (int16: -32768..32767)"]
+
+
+def test_board_address_out_of_range(tree):
+    errs, text = _errors(tree, "address: 2,", "address: 20,")
+    assert errs == [f"{_at(text, '20, axes')}: error: motor_control.boards[1].address: 20 is not a board address (1..14)"]
+
+
+def test_duplicate_board_address(tree):
+    errs, text = _errors(tree, "address: 3,", "address: 1,")
+    assert errs == [f"{_at(text, '1, axes: [eyes')}: error: motor_control.boards[2].address: 1 is already the "
+                    "address of 'neck-pitch-roll'"]
+
+
+def test_coupled_eye_joints_stay_on_one_board(tree):
+    errs, _ = _errors(tree, "axes: [neck_yaw, eyes_tilt]}", "axes: [neck_yaw, eyes_version]}")
+    assert any("motor_control.boards[2].axes[0]: 'eyes_version' is already on board 'neck-yaw-eyes-tilt'" in e
+               for e in errs), errs
+    assert any("no board drives 'eyes_tilt'" in e for e in errs), errs
+
+
+def test_unknown_joint_on_an_axis(tree):
+    errs, text = _errors(tree, "axes: [neck_pitch, neck_roll]}", "axes: [neck_pitch, neck_twist]}")
+    assert f"{_at(text, 'neck_twist')}: error: motor_control.boards[0].axes[1]: unknown joint 'neck_twist' " \
+           "(the control joints are neck_pitch, neck_roll, neck_yaw, eyes_tilt, eyes_version, eyes_vergence)" in errs
+
+
+def test_missing_value(tree):
+    errs, text = _errors(tree, "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+                         "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300,")
+    assert errs == [f"{_at(text, '{kp: 35,')}: error: motor_control.joints.eyes_tilt.max_velocity: missing"]
+
+
+def test_speed_limit_beyond_the_wire(tree):
+    errs, text = _errors(tree, "integral_limit: 300, max_velocity: 150, current_limit: 620}",
+                         "integral_limit: 300, max_velocity: 2000, current_limit: 620}")
+    assert len(errs) == 1 and errs[0].startswith(
+        f"{_at(text, 'max_velocity: 2000', skip=14)}: error: motor_control.joints.eyes_tilt.max_velocity: 2000 deg/s "
+        "is 3666895 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
+
+
+def test_bitrate_must_match_the_protocol(tree):
+    errs, text = _errors(tree, "bitrate: 1000000, host_address: 0}", "bitrate: 500000, host_address: 0}")
+    assert errs == [f"{_at(text, '500000')}: error: motor_control.bus.bitrate: 500000 differs from the "
+                    "motor_control protocol's 1000000 bit/s (interfaces/idl/can_motor_control.yaml)"]
+
+
+def test_mechanics_errors_are_placed_too(tree):
+    errs, text = _errors(tree, "faulhaber-16-7-43:    {kind: gearhead, ratio: 43,", "faulhaber-16-7-43:    {kind: gearhead, ratio: -43,")
+    assert errs == [f"{_at(text, 'ratio: -43', skip=7)}: error: purchased.faulhaber-16-7-43.ratio: must be > 0, got -43"]
+
+
+def test_a_parameter_change_travels_to_every_output(tree):
+    path = tree / "hardware" / "head-parameters.yaml"
+    path.write_text(path.read_text().replace("yaw: {motor_teeth: 14, joint_teeth: 36}",
+                                             "yaw: {motor_teeth: 14, joint_teeth: 40}"))
+    outputs = render(tree)
+    ini = outputs["drivers/can/config/head.ini"]
+    assert f"gear_ratio 66 66 {66 * 40 / 14!r} " in ini
+    header = outputs["hardware/electronics/firmware/robogene_head_board_config.h"]
+    assert f"{4 * 512 * 66 * 40 / 14 / 360!r}f" in header
+    assert render(tree) == outputs  # byte-identical across runs
