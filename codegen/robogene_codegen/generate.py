@@ -12,7 +12,7 @@ from .idl import compile_directory
 # produces any more is stale and is removed by `generate`.
 OWNED_DIRS = ("runtime/include/robogene/dev/generated", "runtime/src/dev/generated",
               "runtime/python/robogene/dev/generated", "docs/interfaces",
-              "drivers/can/generated", "runtime/python/robogene/can/generated")
+              "drivers/can/generated", "runtime/python/robogene/can/generated", "docs/can")
 
 
 def render(root: Path) -> dict[str, str]:

@@ -1,0 +1,42 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Markdown tables of each CAN protocol and board configuration, for docs/can/."""
+from __future__ import annotations
+
+from ...can.model import CanField
+from ...idl.model import Idl
+from ..common import environment, html_comment_header
+
+OUT_DIR = "docs/can"
+
+
+def number(x: float) -> str:
+    return str(int(x)) if float(x).is_integer() else repr(float(x))
+
+
+def layout(fields: list[CanField]) -> str:
+    """`b1-4 position int32 count` lines of a payload, one per field."""
+    if not fields:
+        return "—"
+    parts = []
+    for f in fields:
+        span = f"{f.byte}" if f.size == 1 else f"{f.byte}-{f.byte + f.size - 1}"
+        scale = ""
+        if f.scaled:
+            scale = f" ×{number(f.scale)}" + (f" {f.offset:+g}" if f.offset else "")
+        unit = f" {f.unit}" if f.unit else ""
+        parts.append(f"[{span}] `{f.name}` {f.type_name}{unit}{scale}")
+    return "<br>".join(parts)
+
+
+def emit(idl: Idl) -> dict[str, str]:
+    env = environment(__file__)
+    env.globals.update(layout=layout, number=number)
+    out = {}
+    for p in idl.can_protocols:
+        out[f"{OUT_DIR}/{p.name}.md"] = env.get_template("protocol.md.j2").render(
+            p=p, header=html_comment_header("CC-BY-SA-4.0", [p.file]))
+    for c in idl.board_configs:
+        out[f"{OUT_DIR}/{c.name}.md"] = env.get_template("board_config.md.j2").render(
+            c=c, header=html_comment_header("CC-BY-SA-4.0", c.sources))
+    return out
