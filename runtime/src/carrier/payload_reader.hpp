@@ -17,5 +17,10 @@ namespace robogene::carrier::detail {
 constexpr std::size_t kDetachBlobsFrom = 64 * 1024;
 
 void read_payload(net::StreamReader& in, std::size_t size, InboundMessage& m);
+// The same from any source with read_exact(void*, size_t).
+template <typename In>
+void read_payload_from(In& in, std::size_t size, InboundMessage& m);
 
 }  // namespace robogene::carrier::detail
+
+#include "payload_reader.ipp"

@@ -16,6 +16,9 @@ CarrierRegistry::CarrierRegistry() {
   carriers_.push_back(make_text_carrier(false));
   carriers_.push_back(make_text_carrier(true));
   carriers_.push_back(make_udp_carrier());
+  carriers_.push_back(make_mcast_carrier());
+  carriers_.push_back(make_shmem_carrier());
+  carriers_.push_back(make_http_carrier());
 }
 
 CarrierRegistry& CarrierRegistry::global() {
@@ -95,8 +98,9 @@ std::unique_ptr<InboundConnection> accept_connection(net::TcpStream stream,
     throw NetworkError("connection from " + peer + ": unknown carrier header " +
                        detail::hex_bytes(header.data(), header.size()));
   }
-  auto conn = carrier->accept(std::move(link), ctx);
-  return conn;
+  AcceptContext with_header = ctx;
+  with_header.header = header;
+  return carrier->accept(std::move(link), with_header);
 }
 
 std::unique_ptr<OutboundConnection> open_connection(const net::Endpoint& at,

@@ -400,6 +400,10 @@ NameReply NameService::cmd_unregister(const Request& r) {
   if (name == "/root") throw Error("/root is the name server itself and cannot be unregistered");
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    // What the port owns (its mcast groups, `set /w owns /tmp/port/1`) goes with it, as in yarpserver.
+    for (const auto& owned : registry_.get_property(name, "owns")) {
+      if (owned != "/root" && owned != name) registry_.remove(owned);
+    }
     registry_.remove(name);
   }
   std::lock_guard<std::mutex> seen(seen_mutex_);

@@ -36,6 +36,7 @@ void Port::Core::connect_output(const Contact& to, const std::string& carrier_na
   ctx.target_name = to.name;
   ctx.timeout = options.connect_timeout;
   ctx.max_message_size = options.max_message_size;
+  if (names) ctx.name_server = names->server();
   auto unit = std::make_shared<OutputUnit>();
   unit->target = to.name;
   unit->carrier = carrier_name.empty() ? (to.carrier.empty() ? "tcp" : to.carrier) : carrier_name;

@@ -16,5 +16,11 @@ std::shared_ptr<const Carrier> make_tcp_carrier(bool with_acks);
 std::shared_ptr<const Carrier> make_text_carrier(bool with_acks);
 // udp (`YA 61 1e...`): handshake over tcp, then CRC-framed datagrams (reference section 3.6).
 std::shared_ptr<const Carrier> make_udp_carrier();
+// mcast (`YA 62 1e...`): tcp handshake naming a multicast group, then datagrams to the group.
+std::shared_ptr<const Carrier> make_mcast_carrier();
+// shmem (`YA 6f 1e...`): same-host shared-memory rings after a tcp handshake.
+std::shared_ptr<const Carrier> make_shmem_carrier();
+// http (`GET /...`, `POST /fo`): a web browser reaching a port; accept only.
+std::shared_ptr<const Carrier> make_http_carrier();
 
 }  // namespace robogene::carrier

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "robogene/carrier/connection.hpp"
@@ -23,6 +24,9 @@ struct AcceptContext {
   std::size_t max_name_length = 1000;              // YARP's cap on sender names
   std::size_t max_line_length = 1u << 20;          // text carriers
   net::Millis handshake_timeout{10000};            // a silent peer cannot hold a thread for ever
+  // The 8 bytes that chose the carrier, set by accept_connection: for http they are the start
+  // of the request ("GET /dat...").
+  Header header{};
 };
 
 struct ConnectContext {
@@ -30,6 +34,9 @@ struct ConnectContext {
   std::string target_name;      // the port we are connecting to, for logs
   std::size_t max_message_size = 64u * 1024u * 1024u;
   net::Millis timeout{10000};   // handshake and, later, every send
+  // The name server the sending port registered with, for carriers that need it during the
+  // handshake (mcast asks it for a multicast group); unset = the YARP configuration's.
+  std::optional<net::Endpoint> name_server;
 };
 
 class Carrier {

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// The carriers this process speaks. The built-in ones (tcp, fast_tcp, text, text_ack, udp) are
-// present from the start; others (name_ser, mcast, http...) are added with add().
+// The carriers this process speaks. The built-in ones (tcp, fast_tcp, text, text_ack, udp, mcast,
+// shmem, http) are present from the start; others (name_ser...) are added with add().
 #pragma once
 
 #include <memory>

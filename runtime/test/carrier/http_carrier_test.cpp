@@ -1,0 +1,156 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// http carrier: what a web browser gets from a port (YARP's HttpCarrier behaviour): the port's
+// page with its connections, data sent from the URL or the page's form, calls answered as text
+// or JSON, the live `/r` stream, and bad requests closed cleanly.
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+
+#include <thread>
+
+#include "../port/port_test_util.hpp"
+#include "../support/wire_helpers.hpp"
+#include "robogene/carrier/registry.hpp"
+#include "robogene/error.hpp"
+#include "robogene/log.hpp"
+
+using namespace robogene;
+using namespace robogene::test;
+using namespace std::chrono_literals;
+
+namespace {
+
+// Sends one request and reads the whole response (the server closes after it).
+std::string http(const Port& p, const std::string& request) {
+  auto s = net::TcpStream::connect(p.contact().endpoint());
+  send(s, request);
+  ::shutdown(s.fd(), SHUT_WR);  // a browser that sent all it will send
+  std::string out;
+  s.set_read_timeout(5000ms);
+  char buf[4096];
+  try {
+    while (std::size_t n = s.read_some(buf, sizeof buf)) out.append(buf, n);
+  } catch (const NetworkError&) {
+  }
+  return out;
+}
+
+std::string body_of(const std::string& response) {
+  auto at = response.find("\r\n\r\n");
+  return at == std::string::npos ? "" : response.substr(at + 4);
+}
+
+struct Echo {
+  std::mutex mutex;
+  std::vector<std::string> got;
+  Port::Reader reader() {
+    return [this](const Bottle& b, const MessageInfo& info, Bottle* reply) {
+      std::lock_guard<std::mutex> lock(mutex);
+      got.push_back(info.from + " " + info.carrier + ": " + b.to_text());
+      if (reply) *reply = Bottle::from_text("is " + b.to_text() + " 4 (web_safe \"<b>\")");
+    };
+  }
+};
+
+}  // namespace
+
+TEST(HttpCarrier, RootPageDescribesThePort) {
+  PortTable t;
+  Port p;
+  open_local(p, "/hr", t);
+  std::string r = http(p, "GET / HTTP/1.1\r\nHost: x\r\nUser-Agent: test\r\n\r\n");
+  EXPECT_EQ(r.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << r;
+  EXPECT_NE(r.find("Content-Type: text/html"), std::string::npos);
+  std::string body = body_of(r);
+  EXPECT_NE(r.find("Content-Length: " + std::to_string(body.size()) + "\r\n"), std::string::npos);
+  EXPECT_NE(body.find("<h1>yarp port /hr</h1>"), std::string::npos) << body;
+  EXPECT_NE(body.find("This is /hr at tcp://127.0.0.1:" + std::to_string(p.contact().port) + "/"), std::string::npos);
+  EXPECT_NE(body.find("There is an input connection from web to /hr using http"), std::string::npos);
+}
+
+TEST(HttpCarrier, DataFromTheUrlOrTheFormReachesTheReaderAndItsReplyIsShown) {
+  PortTable t;
+  Port p;
+  Echo echo;
+  p.set_reader(echo.reader());
+  open_local(p, "/hr", t);
+  std::string r = http(p, "GET /data=1+2+%22a+b%22 HTTP/1.1\r\n\r\n");
+  std::string body = body_of(r);
+  EXPECT_NE(body.find("is 1 2 &quot;a b&quot; 4 (web_safe &quot;&lt;b&gt;&quot;)"), std::string::npos) << body;
+  EXPECT_NE(body.find("name=data value=\"1 2 &quot;a b&quot;\""), std::string::npos) << body;
+  std::string form = "data=%5Bset%5D+%5Bpos%5D+1+30.5";
+  r = http(p, "POST /form HTTP/1.1\r\nContent-Type: application/x-www-form-urlencoded\r\nContent-Length: " +
+                  std::to_string(form.size()) + "\r\n\r\n" + form);
+  EXPECT_NE(body_of(r).find("is [set] [pos] 1 30.5 4"), std::string::npos) << r;
+  std::lock_guard<std::mutex> lock(echo.mutex);
+  ASSERT_EQ(echo.got.size(), 2u);
+  EXPECT_EQ(echo.got[0], "web http: 1 2 \"a b\"");
+  EXPECT_EQ(echo.got[1], "web http: [set] [pos] 1 30.5");
+}
+
+TEST(HttpCarrier, PathCallsAnswerAsTextOrJson) {
+  PortTable t;
+  Port p;
+  Echo echo;
+  p.set_reader(echo.reader());
+  open_local(p, "/hr", t);
+  std::string r = http(p, "GET /get/axes HTTP/1.1\r\n\r\n");
+  EXPECT_NE(r.find("Content-Type: text/plain"), std::string::npos) << r;
+  EXPECT_EQ(body_of(r), "is get axes 4 (web_safe \"<b>\")\r\n");
+  r = http(p, "GET /get/axes?format=json HTTP/1.1\r\n\r\n");
+  EXPECT_NE(r.find("Content-Type: application/json"), std::string::npos) << r;
+  EXPECT_EQ(body_of(r), "[\"is\", \"get\", \"axes\", 4, [\"web_safe\", \"<b>\"]]");
+  r = http(p, "GET /?req=get+pos+1.5 HTTP/1.1\r\n\r\n");
+  EXPECT_EQ(body_of(r), "[\"is\", \"get\", \"pos\", 1.5, 4, [\"web_safe\", \"<b>\"]]");
+}
+
+TEST(HttpCarrier, ReadStreamsWhatThePortWritesUntilTheBrowserLeaves) {
+  log::set_level(log::Level::Off);
+  PortTable t;
+  Port p;
+  open_local(p, "/hw", t);
+  auto s = net::TcpStream::connect(p.contact().endpoint());
+  send(s, "GET /r HTTP/1.1\r\n\r\n");
+  std::string head = read_until(s, "Reading data from port...");
+  EXPECT_NE(head.find("Transfer-Encoding: chunked"), std::string::npos) << head;
+  for (int i = 0; i < 100 && p.output_names().empty(); ++i) std::this_thread::sleep_for(10ms);
+  ASSERT_EQ(p.output_names(), std::vector<std::string>{"web"});
+  ASSERT_TRUE(p.write(Bottle::from_text("1 <two> \"three\"")));
+  std::string chunk = read_until(s, "three\r\n\r\n");
+  EXPECT_NE(chunk.find("\r\n1 &quot;&lt;two&gt;&quot; three\r\n\r\n"), std::string::npos) << chunk;
+  s.close();
+  // The browser is gone: the next writes fail on that output and it is dropped.
+  for (int i = 0; i < 100 && !p.output_names().empty(); ++i) {
+    p.write(Bottle::from_text("tick"));
+    std::this_thread::sleep_for(10ms);
+  }
+  EXPECT_TRUE(p.output_names().empty());
+  log::set_level(log::Level::Warn);
+}
+
+TEST(HttpCarrier, BadRequestsAreClosedAndThePortKeepsServing) {
+  log::set_level(log::Level::Off);
+  PortTable t;
+  Port p;
+  open_local(p, "/hr", t);
+  EXPECT_EQ(http(p, "GET /" + std::string(20000, 'x') + " HTTP/1.1\r\n\r\n"), "");       // line too long
+  EXPECT_EQ(http(p, "POST /form HTTP/1.1\r\nContent-Length: 99999999999\r\n\r\n"), "");   // body too big
+  EXPECT_EQ(http(p, "POST /form HTTP/1.1\r\nContent-Length: banana\r\n\r\n"), "");
+  EXPECT_EQ(http(p, "GET /data=1 HTTP/1.1\r\nHost: x\r\n"), "");                           // cut short
+  EXPECT_EQ(http(p, "GET / HTTP/1.1\r\n\r\n").rfind("HTTP/1.1 200 OK", 0), 0u);
+  log::set_level(log::Level::Warn);
+}
+
+TEST(HttpCarrier, APortCannotSendOverHttp) {
+  PortTable t;
+  Port w, r;
+  open_local(w, "/hw", t);
+  open_local(r, "/hr", t);
+  try {
+    w.add_output("/hr", "http");
+    FAIL() << "connected over http";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("http is how a web browser reaches a port"), std::string::npos) << e.what();
+  }
+}
