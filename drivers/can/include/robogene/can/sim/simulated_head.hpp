@@ -1,0 +1,55 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// SimulatedHead: every board of a head configuration on one bus, as firmware would run them.
+// A thread runs the 1 kHz control loop in real time: it takes the host's commands off the bus,
+// lets the addressed board answer, steps every board and sends their broadcasts. A late tick is
+// caught up (the model always advances in whole control periods), so simulated time keeps pace
+// with the wall clock on a busy machine.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "robogene/can/bus.hpp"
+#include "robogene/can/head_config.hpp"
+#include "robogene/can/sim/board_sim.hpp"
+
+namespace robogene::can::sim {
+
+class SimulatedHead {
+ public:
+  // Starts the control loop at once.
+  SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor = {});
+  ~SimulatedHead();
+  SimulatedHead(const SimulatedHead&) = delete;
+  SimulatedHead& operator=(const SimulatedHead&) = delete;
+
+  void stop();
+  // For tests and tools: the joint-side angle of a board's motor m, its axis's counts, its mode.
+  double motor_degrees(int board, int motor);
+  std::int32_t measured_counts(int board, int axis);
+  // Control periods run so far, and how many frames were not commands the boards understood.
+  std::uint64_t ticks() const { return ticks_; }
+  std::uint64_t rejected_frames() const { return rejected_; }
+
+ private:
+  void loop();
+  void take_commands();
+  void send(const Envelope& e);
+  BoardSim& board(int address);
+
+  std::unique_ptr<Bus> bus_;
+  double period_s_;
+  std::mutex mutex_;
+  std::vector<BoardSim> boards_;
+  std::atomic<bool> running_{true};
+  std::atomic<std::uint64_t> ticks_{0}, rejected_{0};
+  std::thread thread_;
+};
+
+}  // namespace robogene::can::sim

@@ -1,0 +1,109 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "robogene/can/sim/simulated_head.hpp"
+
+#include <chrono>
+
+#include "robogene/log.hpp"
+
+namespace robogene::can::sim {
+namespace {
+
+constexpr int kMaxCatchUpTicks = 50;  // past this the loop gives up on real time instead of spinning
+
+}  // namespace
+
+SimulatedHead::SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor)
+    : bus_(std::move(bus)), period_s_(head.control_period_us / 1e6) {
+  for (const auto& b : head.boards) boards_.emplace_back(head, b, motor);
+  // Commands and replies of the host (class 0, source 0): the only frames boards act on.
+  bus_->set_filters({{0x000, 0x7F0}});
+  thread_ = std::thread([this] { loop(); });
+}
+
+SimulatedHead::~SimulatedHead() { stop(); }
+
+void SimulatedHead::stop() {
+  running_ = false;
+  if (thread_.joinable()) thread_.join();
+}
+
+BoardSim& SimulatedHead::board(int address) {
+  for (auto& b : boards_) {
+    if (b.address() == address) return b;
+  }
+  throw Error("simulated head: no board at address " + std::to_string(address));
+}
+
+double SimulatedHead::motor_degrees(int address, int motor) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).motor_degrees(motor);
+}
+
+std::int32_t SimulatedHead::measured_counts(int address, int axis) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).measured_counts(axis);
+}
+
+void SimulatedHead::send(const Envelope& e) {
+  try {
+    bus_->send(encode(e), Millis(10));
+  } catch (const Error& err) {
+    log::warn(bus_->name(), std::string("simulated board could not send: ") + err.what());
+  }
+}
+
+void SimulatedHead::take_commands() {
+  for (int n = 0; n < 256; ++n) {  // bounded, so a flood cannot starve the control loop
+    std::optional<Frame> f;
+    try {
+      f = bus_->receive(Millis(0));
+    } catch (const BusError& e) {
+      log::warn(bus_->name(), std::string("simulated head: ") + e.what());
+      continue;
+    }
+    if (!f) return;
+    Envelope e;
+    try {
+      e = decode(*f);
+    } catch (const CodecError& err) {
+      ++rejected_;
+      log::debug(bus_->name(), std::string("simulated head ignores ") + err.what());
+      continue;
+    }
+    if (message_kind(e.message) != MessageKind::request) continue;
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto& b : boards_) {
+      if (e.destination != b.address() && e.destination != kBroadcastAddress) continue;
+      if (auto reply = b.handle(e)) send(*reply);
+    }
+  }
+}
+
+void SimulatedHead::loop() {
+  using clock = std::chrono::steady_clock;
+  const auto period = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(period_s_));
+  auto next = clock::now();
+  std::vector<Envelope> out;
+  while (running_) {
+    take_commands();
+    int steps = 0;
+    const auto now = clock::now();
+    while (next <= now && steps < kMaxCatchUpTicks) {
+      out.clear();
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        const double t = static_cast<double>(ticks_ + 1) * period_s_;
+        for (auto& b : boards_) b.step(t, period_s_, out);
+      }
+      ++ticks_;
+      for (const auto& e : out) send(e);
+      next += period;
+      ++steps;
+    }
+    if (steps == kMaxCatchUpTicks) next = clock::now() + period;
+    std::this_thread::sleep_until(next);
+  }
+}
+
+}  // namespace robogene::can::sim
