@@ -111,7 +111,8 @@ class BoardConfig:
 
     @property
     def sources(self) -> list[str]:
-        return sorted({self.file, self.parameters_file, self.protocol.file})
+        """The IDL files, then the parameter file the numbers come from."""
+        return sorted({self.file, self.protocol.file}) + [self.parameters_file]
 
 
 class _Fail(Exception):

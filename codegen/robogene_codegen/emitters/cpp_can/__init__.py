@@ -50,10 +50,68 @@ def commands_of(cls) -> list[tuple]:
     return [(code, pair[0], pair[1]) for code, pair in sorted(by_code.items())]
 
 
+def _range_args(f: CanField) -> str:
+    lo, hi = scalar_range(f.scalar)
+    return f"{int_literal(lo)}, {int_literal(hi)}"
+
+
+def _put(m, f: CanField) -> str:
+    at = f"f, {f.byte}, {f.size}, "
+    if f.kind == "enum":
+        return f'  put({at}wire_of(m.{f.name}, "{m.name}", "{f.name}"));'
+    if f.kind == "bool":
+        return f"  put({at}m.{f.name} ? 1 : 0);"
+    if f.kind == "real":
+        return (f"  put({at}to_raw(m.{f.name}, {literal(f.scale)}, {literal(f.offset)}, {_range_args(f)}, "
+                f'"{m.name}", "{f.name}", "{f.unit or ""}"));')
+    return f"  put({at}static_cast<std::int64_t>(m.{f.name}));"
+
+
+def _take(m, f: CanField) -> str:
+    raw = f"get(f, {f.byte}, {f.size}, {'true' if f.signed else 'false'})"
+    if f.kind == "enum":
+        return f'  m.{f.name} = {snake(f.enum.name)}_from_wire({raw}, "{m.name}", "{f.name}");'
+    if f.kind == "bool":
+        return f'  m.{f.name} = bool_from_wire({raw}, "{m.name}", "{f.name}");'
+    if f.kind == "real":
+        return f"  m.{f.name} = from_raw({raw}, {literal(f.scale)}, {literal(f.offset)});"
+    return f"  m.{f.name} = static_cast<{field_type(f)}>({raw});"
+
+
+def _text(f: CanField) -> str:
+    value = {"enum": f"std::string(to_string(m.{f.name}))",
+             "bool": f'std::string(m.{f.name} ? "true" : "false")',
+             "real": f"real_text(m.{f.name})",
+             "flags": f"flags_text(m.{f.name}, {f.size})"}.get(f.kind, f"std::to_string(m.{f.name})")
+    return f'  s += " {f.name}=" + {value};'
+
+
+def _parse(m, f: CanField) -> str:
+    if f.kind == "enum":
+        return f'  m.{f.name} = {snake(f.enum.name)}_from_text(t.word("{f.name}"), "{m.name}", "{f.name}");'
+    if f.kind == "bool":
+        return f'  m.{f.name} = t.boolean("{f.name}");'
+    if f.kind == "real":
+        return f'  m.{f.name} = t.real("{f.name}");'
+    return f'  m.{f.name} = static_cast<{field_type(f)}>(t.integer("{f.name}", {_range_args(f)}));'
+
+
+def message_functions(m) -> str:
+    """put_fields, take_fields, text_fields and parse_fields of one message (built here rather than
+    in the template: Jinja compiles templates on every run, and this keeps that cheap)."""
+    def body(lines: list[str], names: tuple) -> str:
+        return "\n".join(lines) if lines else "\n".join(f"  (void){n};" for n in names)
+    return "\n".join([
+        f"void put_fields(Frame& f, const {m.pascal}& m) {{", body([_put(m, f) for f in m.fields], ("f", "m")), "}", "",
+        f"void take_fields(const Frame& f, {m.pascal}& m) {{", body([_take(m, f) for f in m.fields], ("f", "m")), "}", "",
+        f"void text_fields(std::string& s, const {m.pascal}& m) {{", body([_text(f) for f in m.fields], ("s", "m")), "}", "",
+        f"void parse_fields(TextFields& t, {m.pascal}& m) {{", body([_parse(m, f) for f in m.fields], ("t", "m")), "}"])
+
+
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
     env.filters["snake"] = snake
-    env.globals.update(cpp_scalar=cpp_scalar, commands_of=commands_of, field_type=field_type, field_default=field_default, literal=literal,
+    env.globals.update(cpp_scalar=cpp_scalar, commands_of=commands_of, message_functions=message_functions, field_type=field_type, field_default=field_default, literal=literal,
                        scalar_range=scalar_range, int_literal=int_literal)
     out = {}
     for proto in idl.can_protocols:
