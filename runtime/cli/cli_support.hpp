@@ -31,6 +31,8 @@ class Args {
   bool flag(const std::string& name);
   // The remaining words (call after every option/flag was taken). UsageError on a leftover "--x".
   std::vector<std::string> positional() const;
+  // Every remaining word, options included (for commands that take free-form --key value).
+  const std::vector<std::string>& rest() const { return words_; }
 
  private:
   std::vector<std::string> words_;

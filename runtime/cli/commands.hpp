@@ -18,5 +18,6 @@ int cmd_connect(Args& args);
 int cmd_disconnect(Args& args);
 int cmd_ping(Args& args);
 int cmd_ls(Args& args);
+int cmd_dev(Args& args);
 
 }  // namespace robogene::cli

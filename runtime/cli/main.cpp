@@ -44,6 +44,8 @@ const Command kCommands[] = {
      robogene::cli::cmd_ping},
     {"ls", "robogene ls [/prefix] [--server HOST:PORT]",
      "list registered ports with their connections and carriers", robogene::cli::cmd_ls},
+    {"dev", "robogene dev --device NAME [--name /prefix] [--from FILE.ini] [--subdevice NAME] [--axes N] [--period S] [--single_port] [--KEY VALUE...] [--server HOST:PORT]",
+     "open a device and serve it on the network until Ctrl-C (the paper's yarpdev)", robogene::cli::cmd_dev},
 };
 
 const Command* find_command(const std::string& name) {

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "robogene/dev/driver_factory.hpp"
 
+#include "robogene/dev/nws/network_devices.hpp"
 #include "robogene/error.hpp"
 
 namespace robogene::dev {
@@ -9,7 +10,13 @@ namespace robogene::dev {
 DriverFactory& DriverFactory::instance() {
   // Never destroyed: devices may outlive static destructors. Built on first use, so the drivers'
   // registrars may run in any order.
-  static DriverFactory* factory = new DriverFactory;
+  // The framework's own devices are added here: robogene_core is a static library, whose
+  // linker would drop self-registering objects.
+  static DriverFactory* factory = [] {
+    auto* f = new DriverFactory;
+    add_network_devices(*f);
+    return f;
+  }();
   return *factory;
 }
 

@@ -31,9 +31,13 @@ class PolyDriver {
   bool open(const std::string& device);
   // Opens the driver named by the `device` key, passing it the whole configuration.
   bool open(const Searchable& config);
+  // Opens the driver named `device`, passing it `config` (a wrapper opens its subdevice so).
+  bool open(const std::string& device, const Searchable& config) { return open_with(device, config); }
   // Closes the device (if open) and forgets it; views obtained earlier become dangling.
   bool close();
   bool is_valid() const { return device_ != nullptr; }
+  // The open device (nullptr when none), for code that serves it whole (network wrappers).
+  DeviceDriver* device() const { return device_.get(); }
   // Why the last open() failed ("" after a success).
   const std::string& last_error() const { return error_; }
 

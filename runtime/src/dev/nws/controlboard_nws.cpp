@@ -1,0 +1,85 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "robogene/dev/nws/controlboard_nws.hpp"
+
+#include "robogene/dev/joint_data.hpp"
+#include "robogene/dev/nws/device_port.hpp"
+#include "robogene/envelope.hpp"
+
+namespace robogene::dev {
+
+void ControlboardNws::open(DeviceDriver& device, const Searchable& config) {
+  close();
+  const std::string name = port_name_option(config, "name");
+  const double period = config.get_float("period", 0.02, 0.001, 10.0);
+  single_port_ = config.get_bool("single_port", false);
+  NameClient names = device_name_client(config);
+  device_ = &device;
+  server_ = std::make_unique<ControlboardServer>(device);
+
+  auto* server = server_.get();
+  const bool single = single_port_;
+  rpc_.set_reader([server, single](const Bottle& data, const MessageInfo&, Bottle* reply) {
+    if (reply) {
+      *reply = server->respond(data);
+    } else if (single && !server->command(data)) {
+      server->respond(data);  // a request sent without waiting for the answer still acts
+    }
+  });
+  command_.set_reader([server](const Bottle& data, const MessageInfo&, Bottle* reply) {
+    const bool done = server->command(data);
+    if (reply) *reply = Bottle{Value::vocab(done ? "ok" : "fail")};
+  });
+  try {
+    if (single_port_) {
+      rpc_.open(name, names);
+    } else {
+      rpc_.open(name + "/rpc:i", names);
+      command_.open(name + "/command:i", names);
+      state_.open(name + "/state:o", names);
+      state_ext_.open(name + "/stateExt:o", names);
+    }
+  } catch (...) {
+    close();
+    throw;
+  }
+  sequence_ = 0;
+  publisher_.start(period, [this] { publish(); });
+}
+
+void ControlboardNws::publish() {
+  Stamp stamp{sequence_++, wall_time_now()};
+  const std::string envelope = stamp.to_text();
+  Bottle state;
+  if (server_->publish_state(state)) {
+    Port& out = single_port_ ? rpc_ : state_;
+    out.set_envelope(envelope);
+    out.write(state);
+  }
+  if (single_port_) return;
+  Bottle joints;
+  if (encode_joint_data(*device_, joints)) {
+    state_ext_.set_envelope(envelope);
+    state_ext_.write(joints);
+  }
+}
+
+void ControlboardNws::close() {
+  publisher_.stop();
+  state_ext_.close();
+  state_.close();
+  command_.close();
+  rpc_.close();
+  server_.reset();
+  device_ = nullptr;
+}
+
+std::vector<std::string> ControlboardNws::port_names() const {
+  std::vector<std::string> out;
+  for (const Port* p : {&rpc_, &command_, &state_, &state_ext_}) {
+    if (p->is_open()) out.push_back(p->name());
+  }
+  return out;
+}
+
+}  // namespace robogene::dev

@@ -1,0 +1,106 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The camera on real ports: frameGrabber_nws_yarp serving fake_grabber at 640x480, and
+// remote_grabber receiving its stream.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <thread>
+
+#include "nws_test_util.hpp"
+#include "robogene/dev/generated/interfaces.hpp"
+#include "robogene/dev/nws/remote_grabber.hpp"
+#include "robogene/dev/poly_driver.hpp"
+
+using namespace robogene;
+using namespace robogene::dev;
+using robogene::test::LocalNameServer;
+
+namespace {
+
+// fake_grabber's frame n (docs/devices.md): red x + 2n, green y + n (mod 256), blue a 16 px
+// checkerboard flipping every 8 frames. The green of pixel (0, 0) is n mod 256, which fixes
+// the whole frame.
+bool is_pattern_frame(const ImageRgb& image, std::int64_t& n) {
+  n = image.at(0, 0)[1];
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      if (p[0] != static_cast<std::uint8_t>((x + 2 * n) % 256) ||
+          p[1] != static_cast<std::uint8_t>((y + n) % 256) ||
+          p[2] != (((x / 16 + y / 16 + n / 8) % 2) ? 200 : 40)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+struct ServedCamera {
+  ServedCamera(LocalNameServer& ns, double framerate) {
+    Property config = ns.config("(device frameGrabber_nws_yarp) (subdevice fake_grabber) (width 640) "
+                                "(height 480) (name /camera)");
+    config.put("framerate", Value(framerate));
+    if (!server.open(config)) throw Error(server.last_error());
+  }
+  PolyDriver server;
+};
+
+}  // namespace
+
+TEST(GrabberNws, Streams640x480RgbAtTheConfiguredRateToARemoteClient) {
+  LocalNameServer ns;
+  ServedCamera served(ns, 30.0);
+  PolyDriver client;
+  ASSERT_TRUE(client.open(ns.config("(device remote_grabber) (remote /camera) (local /viewer)")))
+      << client.last_error();
+  IFrameGrabberImage* frames = nullptr;
+  ASSERT_TRUE(client.view(frames));
+  std::int32_t w = 0, h = 0;
+  ASSERT_TRUE(frames->width(w));
+  ASSERT_TRUE(frames->height(h));
+  EXPECT_EQ(w, 640);
+  EXPECT_EQ(h, 480);
+
+  // Content: every frame is the test pattern, and frames move on.
+  std::int64_t previous = -1;
+  for (int i = 0; i < 3; ++i) {
+    ImageRgb image;
+    ASSERT_TRUE(frames->getImage(image));
+    ASSERT_EQ(image.width, 640);
+    ASSERT_EQ(image.height, 480);
+    std::int64_t n = 0;
+    EXPECT_TRUE(is_pattern_frame(image, n)) << "frame " << i << " is not the fake_grabber pattern";
+    EXPECT_NE(n, previous);
+    previous = n;
+  }
+
+  // Rate: frames counted over 2 s at the client, within 20% of 30 Hz.
+  auto* remote = dynamic_cast<RemoteGrabber*>(frames);
+  ASSERT_NE(remote, nullptr);
+  const std::uint64_t before = remote->frames_received();
+  const auto start = std::chrono::steady_clock::now();
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double rate = static_cast<double>(remote->frames_received() - before) / seconds;
+  EXPECT_NEAR(rate, 30.0, 6.0);
+}
+
+TEST(GrabberNws, ControlsGoThroughRpc) {
+  LocalNameServer ns;
+  ServedCamera served(ns, 10.0);
+  PolyDriver client;
+  ASSERT_TRUE(client.open(ns.config("(device remote_grabber) (remote /camera) (local /viewer)")))
+      << client.last_error();
+  IFrameGrabberControls* controls = nullptr;
+  ASSERT_TRUE(client.view(controls));
+  ASSERT_TRUE(controls->setFeature(CameraFeature::shutter, 0.25));
+  double v = 0;
+  ASSERT_TRUE(controls->getFeature(CameraFeature::shutter, v));
+  EXPECT_EQ(v, 0.25);
+  bool has = true;
+  ASSERT_TRUE(controls->hasFeature(CameraFeature::focus, has));
+  EXPECT_FALSE(has);
+}
