@@ -252,3 +252,31 @@ def test_a_parameter_change_travels_to_every_output(tree):
     header = outputs["hardware/electronics/firmware/robogene_head_board_config.h"]
     assert f"{4 * 512 * 66 * 40 / 14 / 360!r}f" in header
     assert render(tree) == outputs  # byte-identical across runs
+
+
+def _idl_errors(tree, old: str, new: str) -> tuple[list[str], str]:
+    path = tree / "interfaces" / "idl" / "head_boards.yaml"
+    text = path.read_text().replace(old, new)
+    path.write_text(text)
+    with pytest.raises(IdlErrors) as info:
+        _compile(tree)
+    return [str(e) for e in info.value.errors], text
+
+
+def test_board_config_names_a_known_protocol(tree):
+    errs, text = _idl_errors(tree, "protocol: motor_control", "protocol: motor_kontrol")
+    line = text[:text.index("motor_kontrol")].count("\n") + 1
+    assert errs == [f"interfaces/idl/head_boards.yaml:{line}:11: error: unknown CAN protocol 'motor_kontrol' "
+                    "(known: motor_control)"]
+
+
+def test_board_config_names_known_broadcasts(tree):
+    errs, text = _idl_errors(tree, "broadcasts: [position, status,", "broadcasts: [position, stat,")
+    line = text[:text.index("stat,")].count("\n") + 1
+    assert errs == [f"interfaces/idl/head_boards.yaml:{line}:24: error: unknown broadcast 'stat' (the "
+                    "motor_control protocol has: position, pid_output, status, current, velocity, supply)"]
+
+
+def test_board_config_needs_its_parameter_file(tree):
+    errs, _ = _idl_errors(tree, "parameters: hardware/head-parameters.yaml", "parameters: hardware/no-such.yaml")
+    assert len(errs) == 1 and "cannot read the parameter file hardware/no-such.yaml (No such file or directory)" in errs[0]
