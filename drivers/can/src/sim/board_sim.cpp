@@ -65,6 +65,9 @@ void BoardSim::set_mode(Axis& a, ControlMode mode) {
   if (mode != ControlMode::idle && mode != ControlMode::position && mode != ControlMode::velocity) {
     return;  // modes this board does not implement leave the axis as it was
   }
+  if (a.mode == mode) {
+    return;  // already there: keep the move in progress
+  }
   a.ref = a.target = a.measured;
   a.ref_velocity = a.velocity_command = 0.0;
   a.integral = 0.0;

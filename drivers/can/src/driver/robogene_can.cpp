@@ -1,0 +1,573 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "robogene_can.hpp"
+
+#include <cmath>
+
+#include "robogene/can/logging_bus.hpp"
+#include "robogene/dev/driver_registrar.hpp"
+#include "robogene/log.hpp"
+
+namespace robogene::can {
+namespace {
+
+constexpr const char* kWho = "robogene_can";
+
+ControlMode to_board(dev::ControlMode m) {
+  switch (m) {
+    case dev::ControlMode::idle: return ControlMode::idle;
+    case dev::ControlMode::position: return ControlMode::position;
+    case dev::ControlMode::velocity: return ControlMode::velocity;
+    case dev::ControlMode::position_direct: return ControlMode::direct;
+    case dev::ControlMode::torque: return ControlMode::torque;
+    case dev::ControlMode::current: return ControlMode::current;
+    case dev::ControlMode::pwm: return ControlMode::open_loop;
+    case dev::ControlMode::unknown: break;
+  }
+  throw Error("control mode unknown cannot be set");
+}
+
+dev::ControlMode from_board(ControlMode m) {
+  switch (m) {
+    case ControlMode::idle:
+    case ControlMode::force_idle: return dev::ControlMode::idle;
+    case ControlMode::position: return dev::ControlMode::position;
+    case ControlMode::velocity: return dev::ControlMode::velocity;
+    case ControlMode::direct: return dev::ControlMode::position_direct;
+    case ControlMode::torque: return dev::ControlMode::torque;
+    case ControlMode::current: return dev::ControlMode::current;
+    case ControlMode::open_loop: return dev::ControlMode::pwm;
+    default: return dev::ControlMode::unknown;
+  }
+}
+
+// Scaled wire fields take multiples of their step; the codec rounds, these keep within range.
+double round_to(double v, double step, double limit) { return std::clamp(std::round(v / step) * step, -limit, limit); }
+std::int16_t to_i16(double v, const char* field) {
+  if (!std::isfinite(v) || v < -32768 || v > 32767 || v != std::floor(v)) {
+    throw Error(std::string("PID ") + field + " " + std::to_string(v) + " is not an integer in -32768..32767 (board units)");
+  }
+  return static_cast<std::int16_t>(v);
+}
+
+}  // namespace
+
+// ---- plumbing ----------------------------------------------------------------------------------
+
+template <class F>
+bool RobogeneCan::guarded(const char* what, int j, F&& f) {
+  try {
+    if (!link_) throw Error("the device is not open");
+    f();
+    return true;
+  } catch (const Error& e) {
+    const std::string text = std::string(what) + (j >= 0 ? " (joint " + std::to_string(j) + ")" : "") + ": " + e.what();
+    log::error(kWho, text);
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_error_ = text;
+    return false;
+  }
+}
+
+template <class T, class F>
+bool RobogeneCan::for_each(const char* what, const std::vector<T>& values, F&& f) {
+  if (values.size() != head_.joints.size()) {
+    return guarded(what, -1, [&] {
+      throw Error(std::to_string(values.size()) + " values for " + std::to_string(head_.joints.size()) + " joints");
+    });
+  }
+  bool ok = true;
+  for (std::size_t j = 0; j < values.size(); ++j) ok = f(static_cast<int>(j), values[j]) && ok;
+  return ok;
+}
+
+template <class T, class F>
+bool RobogeneCan::read_each(std::vector<T>& out, F&& f) {
+  out.assign(head_.joints.size(), T{});
+  bool ok = true;
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    T v{};
+    ok = f(static_cast<int>(j), v) && ok;
+    out[j] = v;
+  }
+  return ok;
+}
+
+std::string RobogeneCan::last_error() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return last_error_;
+}
+
+const JointConfig& RobogeneCan::joint(int j) const {
+  if (j < 0 || static_cast<std::size_t>(j) >= head_.joints.size()) {
+    throw Error("no joint " + std::to_string(j) + " (the head has " + std::to_string(head_.joints.size()) + ")");
+  }
+  return head_.joints[static_cast<std::size_t>(j)];
+}
+
+void RobogeneCan::send(int j, const Message& m) { link_->send(joint(j).board, joint(j).axis, m); }
+Envelope RobogeneCan::request(int j, const Message& m) { return link_->request(joint(j).board, joint(j).axis, m); }
+
+double RobogeneCan::speed_counts(int j, double deg_per_s) const {
+  const JointConfig& jc = joint(j);
+  return round_to(std::clamp(deg_per_s, -jc.max_velocity, jc.max_velocity) * jc.counts_per_degree, 10, 327670);
+}
+
+double RobogeneCan::acceleration_counts(int j, double deg_per_s2) const {
+  return round_to(deg_per_s2 * joint(j).counts_per_degree, 1000, 32767000);
+}
+
+void RobogeneCan::ensure_mode(int j, ControlMode mode) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (commanded_mode_[static_cast<std::size_t>(j)] == mode) return;
+  }
+  send(j, SetControlMode{mode});
+  std::lock_guard<std::mutex> lock(mutex_);
+  commanded_mode_[static_cast<std::size_t>(j)] = mode;
+  if (mode != ControlMode::velocity) ref_velocity_[static_cast<std::size_t>(j)] = 0.0;
+}
+
+BoardLink::BoardState RobogeneCan::fresh_state(int j) const {
+  if (auto fault = link_->fault()) throw Error(*fault);
+  const BoardLink::BoardState s = link_->state(joint(j).board);
+  const auto max_age = Millis(head_.reply_timeout_ms);
+  if (!s.position_time || BoardLink::Clock::now() - *s.position_time > max_age) {
+    throw BusError(BusErrorKind::timeout, link_->bus_name() + ": board " + std::to_string(joint(j).board) +
+                                              " has broadcast no position for over " + std::to_string(max_age.count()) + " ms");
+  }
+  return s;
+}
+
+// ---- open / close ------------------------------------------------------------------------------
+
+void RobogeneCan::configure_boards(double ref_acceleration) {
+  for (const auto& b : head_.boards) {
+    const Envelope e = link_->request(b.address, 0, GetFirmwareVersion{static_cast<std::uint8_t>(head_.protocol_major),
+                                                                        static_cast<std::uint8_t>(head_.protocol_minor)});
+    const auto& v = std::get<GetFirmwareVersionReply>(e.message);
+    if (!v.compatible) {
+      throw Error(link_->bus_name() + ": board " + std::to_string(b.address) + " (" + b.name + ") speaks protocol " +
+                  std::to_string(v.protocol_major) + "." + std::to_string(v.protocol_minor) + ", the config asks for " +
+                  std::to_string(head_.protocol_major) + "." + std::to_string(head_.protocol_minor));
+    }
+    link_->send(b.address, 0, SetBroadcastPolicy{head_.broadcast_policy});
+  }
+  for (std::size_t i = 0; i < head_.joints.size(); ++i) {
+    const int j = static_cast<int>(i);
+    const JointConfig& jc = head_.joints[i];
+    const auto counts = [&](double deg) { return static_cast<std::int32_t>(std::lround(deg * jc.counts_per_degree)); };
+    send(j, SetVelocityTimeout{static_cast<std::int16_t>(head_.velocity_timeout_ms)});
+    send(j, SetPositionPid{static_cast<std::int16_t>(jc.pid.kp), static_cast<std::int16_t>(jc.pid.ki),
+                           static_cast<std::int16_t>(jc.pid.kd), static_cast<std::uint8_t>(jc.pid.shift)});
+    send(j, SetPositionPidLimits{static_cast<std::int16_t>(jc.pid.offset), static_cast<std::int16_t>(jc.pid.output_limit),
+                                 static_cast<std::int16_t>(jc.pid.integral_limit)});
+    send(j, SetMinPosition{counts(jc.min)});
+    send(j, SetMaxPosition{counts(jc.max)});
+    send(j, SetMaxVelocity{round_to(jc.max_velocity * jc.counts_per_degree, 10, 327670)});
+    send(j, SetCurrentLimit{static_cast<std::int32_t>(std::lround(jc.current_limit))});
+    send(j, SetDesiredAcceleration{acceleration_counts(j, ref_acceleration)});
+    send(j, SetControlMode{ControlMode::position});
+  }
+}
+
+bool RobogeneCan::open(const dev::Searchable& config) {
+  close();
+  head_ = read_head_config(config);
+  const std::string spec = config.get_string("bus", "socketcan:" + head_.device);
+  const std::string log_path = config.get_string("can_log", "");
+  const double speed = config.get_float("ref_speed", 10.0, 1e-6, 1e5);
+  const double acceleration = config.get_float("ref_acceleration", 50.0, 1e-3, 1e6);
+  std::unique_ptr<Bus> bus = open_bus(spec);
+  if (!log_path.empty()) bus = std::make_unique<LoggingBus>(std::move(bus), std::make_shared<CandumpWriter>(log_path));
+  link_ = std::make_unique<BoardLink>(std::move(bus), Millis(head_.reply_timeout_ms));
+  const std::size_t n = head_.joints.size();
+  ref_speed_.assign(n, speed);
+  ref_acceleration_.assign(n, acceleration);
+  ref_velocity_.assign(n, 0.0);
+  commanded_mode_.assign(n, ControlMode::position);
+  try {
+    configure_boards(acceleration);
+    // Every board must be heard before the device counts as open.
+    const auto deadline = BoardLink::Clock::now() + Millis(head_.reply_timeout_ms);
+    for (const auto& b : head_.boards) {
+      while (!link_->state(b.address).position_time && BoardLink::Clock::now() < deadline) std::this_thread::sleep_for(Millis(2));
+      if (!link_->state(b.address).position_time) {
+        throw BusError(BusErrorKind::timeout, link_->bus_name() + ": board " + std::to_string(b.address) + " (" + b.name +
+                                                  ") sends no position broadcasts");
+      }
+    }
+  } catch (...) {
+    link_.reset();
+    throw;
+  }
+  running_ = true;
+  refresher_ = std::thread([this] { refresh_velocities(); });
+  return true;
+}
+
+bool RobogeneCan::close() {
+  running_ = false;
+  if (refresher_.joinable()) refresher_.join();
+  if (link_) {
+    // Leave the head still: idle would let the neck drop, so hold position where it is.
+    for (std::size_t j = 0; j < head_.joints.size(); ++j) {
+      try {
+        send(static_cast<int>(j), StopTrajectory{});
+      } catch (const Error& e) {
+        log::warn(kWho, std::string("closing: ") + e.what());
+        break;
+      }
+    }
+  }
+  link_.reset();
+  return true;
+}
+
+// The boards stop an axis whose velocity command is older than the velocity timeout, so a host
+// that dies leaves the head still; while the device lives, velocity commands are repeated.
+void RobogeneCan::refresh_velocities() {
+  const auto period = Millis(std::max(5, head_.velocity_timeout_ms / 4));
+  while (running_) {
+    std::this_thread::sleep_for(period);
+    for (std::size_t j = 0; j < head_.joints.size(); ++j) {
+      double v = 0;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (commanded_mode_[j] != ControlMode::velocity || ref_velocity_[j] == 0.0) continue;
+        v = ref_velocity_[j];
+      }
+      const int i = static_cast<int>(j);
+      guarded("velocity refresh", i, [&] {
+        send(i, VelocityMove{speed_counts(i, v), acceleration_counts(i, ref_acceleration_[j])});
+      });
+    }
+  }
+}
+
+// ---- shared ------------------------------------------------------------------------------------
+
+bool RobogeneCan::getAxes(std::int32_t& ax) {
+  return guarded("getAxes", -1, [&] { ax = static_cast<std::int32_t>(head_.joints.size()); });
+}
+
+bool RobogeneCan::setRefAcceleration(int j, double acc) {
+  return guarded("setRefAcceleration", j, [&] {
+    if (!std::isfinite(acc) || acc <= 0) throw Error("acceleration " + std::to_string(acc) + " must be positive");
+    send(j, SetDesiredAcceleration{acceleration_counts(j, acc)});
+    std::lock_guard<std::mutex> lock(mutex_);
+    ref_acceleration_[static_cast<std::size_t>(j)] = acc;
+  });
+}
+bool RobogeneCan::setRefAccelerations(const std::vector<double>& accs) {
+  return for_each("setRefAccelerations", accs, [&](int j, double a) { return setRefAcceleration(j, a); });
+}
+bool RobogeneCan::getRefAcceleration(int j, double& acc) {
+  return guarded("getRefAcceleration", j, [&] {
+    joint(j);
+    std::lock_guard<std::mutex> lock(mutex_);
+    acc = ref_acceleration_[static_cast<std::size_t>(j)];
+  });
+}
+bool RobogeneCan::getRefAccelerations(std::vector<double>& accs) {
+  return read_each(accs, [&](int j, double& a) { return getRefAcceleration(j, a); });
+}
+
+bool RobogeneCan::stop(int j) {
+  return guarded("stop", j, [&] {
+    send(j, StopTrajectory{});
+    std::lock_guard<std::mutex> lock(mutex_);
+    ref_velocity_[static_cast<std::size_t>(j)] = 0.0;
+  });
+}
+bool RobogeneCan::stop() {
+  bool ok = true;
+  for (std::size_t j = 0; j < head_.joints.size(); ++j) ok = stop(static_cast<int>(j)) && ok;
+  return ok && link_;
+}
+
+// ---- IEncoders ---------------------------------------------------------------------------------
+
+bool RobogeneCan::getEncoder(int j, double& v) {
+  return guarded("getEncoder", j, [&] {
+    const auto s = fresh_state(j);
+    v = s.position[static_cast<std::size_t>(joint(j).axis)] / joint(j).counts_per_degree;
+  });
+}
+bool RobogeneCan::getEncoders(std::vector<double>& vs) {
+  return read_each(vs, [&](int j, double& v) { return getEncoder(j, v); });
+}
+bool RobogeneCan::getEncoderSpeed(int j, double& sp) {
+  return guarded("getEncoderSpeed", j, [&] {
+    if (head_.broadcast_policy & broadcast_mask::velocity) {
+      const auto s = fresh_state(j);
+      sp = s.speed[static_cast<std::size_t>(joint(j).axis)] / joint(j).counts_per_degree;
+    } else {
+      const auto r = std::get<GetEncoderPositionReply>(request(j, GetEncoderPosition{}).message);
+      sp = r.speed / joint(j).counts_per_degree;
+    }
+  });
+}
+bool RobogeneCan::getEncoderSpeeds(std::vector<double>& sps) {
+  return read_each(sps, [&](int j, double& v) { return getEncoderSpeed(j, v); });
+}
+bool RobogeneCan::getEncoderAcceleration(int j, double& acc) {
+  return guarded("getEncoderAcceleration", j, [&] {
+    if (!(head_.broadcast_policy & broadcast_mask::velocity)) {
+      throw Error("the broadcast policy has no velocity broadcast, which carries accelerations");
+    }
+    const auto s = fresh_state(j);
+    acc = s.acceleration[static_cast<std::size_t>(joint(j).axis)] / joint(j).counts_per_degree;
+  });
+}
+bool RobogeneCan::getEncoderAccelerations(std::vector<double>& accs) {
+  return read_each(accs, [&](int j, double& v) { return getEncoderAcceleration(j, v); });
+}
+bool RobogeneCan::resetEncoder(int j) { return setEncoder(j, 0.0); }
+bool RobogeneCan::resetEncoders() {
+  return setEncoders(std::vector<double>(head_.joints.size(), 0.0));
+}
+bool RobogeneCan::setEncoder(int j, double val) {
+  return guarded("setEncoder", j, [&] {
+    if (!std::isfinite(val)) throw Error("position is not finite");
+    send(j, SetEncoderPosition{static_cast<std::int32_t>(std::lround(val * joint(j).counts_per_degree))});
+  });
+}
+bool RobogeneCan::setEncoders(const std::vector<double>& vals) {
+  return for_each("setEncoders", vals, [&](int j, double v) { return setEncoder(j, v); });
+}
+
+// ---- IPositionControl --------------------------------------------------------------------------
+
+bool RobogeneCan::positionMove(int j, double ref) {
+  return guarded("positionMove", j, [&] {
+    if (!std::isfinite(ref)) throw Error("target is not finite");
+    ensure_mode(j, ControlMode::position);
+    double speed = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      speed = ref_speed_[static_cast<std::size_t>(j)];
+    }
+    send(j, PositionMove{static_cast<std::int32_t>(std::lround(ref * joint(j).counts_per_degree)), speed_counts(j, speed)});
+  });
+}
+bool RobogeneCan::positionMove(const std::vector<double>& refs) {
+  return for_each("positionMove", refs, [&](int j, double r) { return positionMove(j, r); });
+}
+bool RobogeneCan::relativeMove(int j, double delta) {
+  double target = 0;
+  return getTargetPosition(j, target) && positionMove(j, target + delta);
+}
+bool RobogeneCan::relativeMove(const std::vector<double>& deltas) {
+  return for_each("relativeMove", deltas, [&](int j, double d) { return relativeMove(j, d); });
+}
+bool RobogeneCan::checkMotionDone(int j, bool& flag) {
+  return guarded("checkMotionDone", j, [&] { flag = std::get<MotionDoneReply>(request(j, MotionDone{}).message).done; });
+}
+bool RobogeneCan::checkMotionDone(std::vector<bool>& flags) {
+  flags.assign(head_.joints.size(), false);
+  bool ok = true;
+  for (std::size_t j = 0; j < flags.size(); ++j) {
+    bool f = false;
+    ok = checkMotionDone(static_cast<int>(j), f) && ok;
+    flags[j] = f;
+  }
+  return ok;
+}
+bool RobogeneCan::setRefSpeed(int j, double sp) {
+  return guarded("setRefSpeed", j, [&] {
+    joint(j);
+    if (!std::isfinite(sp) || sp <= 0) throw Error("speed " + std::to_string(sp) + " must be positive");
+    std::lock_guard<std::mutex> lock(mutex_);
+    ref_speed_[static_cast<std::size_t>(j)] = sp;
+  });
+}
+bool RobogeneCan::setRefSpeeds(const std::vector<double>& sps) {
+  return for_each("setRefSpeeds", sps, [&](int j, double s) { return setRefSpeed(j, s); });
+}
+bool RobogeneCan::getRefSpeed(int j, double& sp) {
+  return guarded("getRefSpeed", j, [&] {
+    joint(j);
+    std::lock_guard<std::mutex> lock(mutex_);
+    sp = ref_speed_[static_cast<std::size_t>(j)];
+  });
+}
+bool RobogeneCan::getRefSpeeds(std::vector<double>& sps) {
+  return read_each(sps, [&](int j, double& s) { return getRefSpeed(j, s); });
+}
+bool RobogeneCan::getTargetPosition(int j, double& ref) {
+  return guarded("getTargetPosition", j, [&] {
+    ref = std::get<GetDesiredPositionReply>(request(j, GetDesiredPosition{}).message).position / joint(j).counts_per_degree;
+  });
+}
+bool RobogeneCan::getTargetPositions(std::vector<double>& refs) {
+  return read_each(refs, [&](int j, double& r) { return getTargetPosition(j, r); });
+}
+
+// ---- IVelocityControl --------------------------------------------------------------------------
+
+bool RobogeneCan::velocityMove(int j, double sp) {
+  return guarded("velocityMove", j, [&] {
+    if (!std::isfinite(sp)) throw Error("speed is not finite");
+    ensure_mode(j, ControlMode::velocity);
+    double acc = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      acc = ref_acceleration_[static_cast<std::size_t>(j)];
+    }
+    send(j, VelocityMove{speed_counts(j, sp), acceleration_counts(j, acc)});
+    std::lock_guard<std::mutex> lock(mutex_);
+    ref_velocity_[static_cast<std::size_t>(j)] = sp;
+  });
+}
+bool RobogeneCan::velocityMove(const std::vector<double>& sps) {
+  return for_each("velocityMove", sps, [&](int j, double s) { return velocityMove(j, s); });
+}
+bool RobogeneCan::getRefVelocity(int j, double& vel) {
+  return guarded("getRefVelocity", j, [&] {
+    joint(j);
+    std::lock_guard<std::mutex> lock(mutex_);
+    vel = ref_velocity_[static_cast<std::size_t>(j)];
+  });
+}
+bool RobogeneCan::getRefVelocities(std::vector<double>& vels) {
+  return read_each(vels, [&](int j, double& v) { return getRefVelocity(j, v); });
+}
+
+// ---- IPidControl: the boards close one loop, on position ---------------------------------------
+
+void RobogeneCan::only_position(dev::PidType type) const {
+  if (type != dev::PidType::position) {
+    throw Error(std::string("the head's boards have no ") + dev::name_of(type) + " PID, only a position PID");
+  }
+}
+
+bool RobogeneCan::setPid(dev::PidType pidtype, int j, const dev::Pid& pid) {
+  return guarded("setPid", j, [&] {
+    only_position(pidtype);
+    if (!(pid.scale >= 0 && pid.scale <= 15 && pid.scale == std::floor(pid.scale))) {
+      throw Error("PID scale (shift) " + std::to_string(pid.scale) + " is not an integer in 0..15");
+    }
+    const SetPositionPid gains{to_i16(pid.kp, "kp"), to_i16(pid.ki, "ki"), to_i16(pid.kd, "kd"), static_cast<std::uint8_t>(pid.scale)};
+    const SetPositionPidLimits limits{to_i16(pid.offset, "offset"), to_i16(pid.max_output, "max_output"),
+                                      to_i16(pid.max_int, "max_int")};
+    send(j, gains);
+    send(j, limits);
+  });
+}
+bool RobogeneCan::setPids(dev::PidType pidtype, const std::vector<dev::Pid>& pids) {
+  return for_each("setPids", pids, [&](int j, const dev::Pid& p) { return setPid(pidtype, j, p); });
+}
+bool RobogeneCan::getPid(dev::PidType pidtype, int j, dev::Pid& pid) {
+  return guarded("getPid", j, [&] {
+    only_position(pidtype);
+    const auto g = std::get<GetPositionPidReply>(request(j, GetPositionPid{}).message);
+    const auto l = std::get<GetPositionPidLimitsReply>(request(j, GetPositionPidLimits{}).message);
+    pid = dev::Pid{};
+    pid.kp = g.kp;
+    pid.ki = g.ki;
+    pid.kd = g.kd;
+    pid.scale = g.shift;
+    pid.offset = l.offset;
+    pid.max_output = l.output_limit;
+    pid.max_int = l.integral_limit;
+  });
+}
+bool RobogeneCan::getPids(dev::PidType pidtype, std::vector<dev::Pid>& pids) {
+  return read_each(pids, [&](int j, dev::Pid& p) { return getPid(pidtype, j, p); });
+}
+bool RobogeneCan::setPidReference(dev::PidType pidtype, int j, double ref) {
+  // The position loop's reference is the trajectory's: a target reached at once is a position move
+  // at the joint's top speed.
+  return guarded("setPidReference", j, [&] {
+    only_position(pidtype);
+    if (!std::isfinite(ref)) throw Error("reference is not finite");
+    ensure_mode(j, ControlMode::position);
+    send(j, PositionMove{static_cast<std::int32_t>(std::lround(ref * joint(j).counts_per_degree)),
+                         speed_counts(j, joint(j).max_velocity)});
+  });
+}
+bool RobogeneCan::setPidReferences(dev::PidType pidtype, const std::vector<double>& refs) {
+  return for_each("setPidReferences", refs, [&](int j, double r) { return setPidReference(pidtype, j, r); });
+}
+bool RobogeneCan::getPidReference(dev::PidType pidtype, int j, double& ref) {
+  return guarded("getPidReference", j, [&] {
+    only_position(pidtype);
+    ref = std::get<GetDesiredPositionReply>(request(j, GetDesiredPosition{}).message).position / joint(j).counts_per_degree;
+  });
+}
+bool RobogeneCan::getPidReferences(dev::PidType pidtype, std::vector<double>& refs) {
+  return read_each(refs, [&](int j, double& r) { return getPidReference(pidtype, j, r); });
+}
+bool RobogeneCan::setPidErrorLimit(dev::PidType, int j, double) {
+  return guarded("setPidErrorLimit", j, [&] { throw Error("the boards' protocol has no PID error limit"); });
+}
+bool RobogeneCan::setPidErrorLimits(dev::PidType pidtype, const std::vector<double>& limits) {
+  return for_each("setPidErrorLimits", limits, [&](int j, double l) { return setPidErrorLimit(pidtype, j, l); });
+}
+bool RobogeneCan::getPidErrorLimit(dev::PidType, int j, double&) {
+  return guarded("getPidErrorLimit", j, [&] { throw Error("the boards' protocol has no PID error limit"); });
+}
+bool RobogeneCan::getPidErrorLimits(dev::PidType pidtype, std::vector<double>& limits) {
+  return read_each(limits, [&](int j, double& l) { return getPidErrorLimit(pidtype, j, l); });
+}
+bool RobogeneCan::getPidError(dev::PidType pidtype, int j, double& err) {
+  // The target less the measured position: the error the loop works off when the trajectory ends.
+  return guarded("getPidError", j, [&] {
+    only_position(pidtype);
+    const double target = std::get<GetDesiredPositionReply>(request(j, GetDesiredPosition{}).message).position;
+    const auto s = fresh_state(j);
+    err = (target - s.position[static_cast<std::size_t>(joint(j).axis)]) / joint(j).counts_per_degree;
+  });
+}
+bool RobogeneCan::getPidErrors(dev::PidType pidtype, std::vector<double>& errs) {
+  return read_each(errs, [&](int j, double& e) { return getPidError(pidtype, j, e); });
+}
+bool RobogeneCan::getPidOutput(dev::PidType pidtype, int j, double& out) {
+  return guarded("getPidOutput", j, [&] {
+    only_position(pidtype);
+    out = std::get<GetPidOutputReply>(request(j, GetPidOutput{}).message).output;
+  });
+}
+bool RobogeneCan::getPidOutputs(dev::PidType pidtype, std::vector<double>& outs) {
+  return read_each(outs, [&](int j, double& o) { return getPidOutput(pidtype, j, o); });
+}
+
+// ---- IControlMode ------------------------------------------------------------------------------
+
+bool RobogeneCan::getControlMode(int j, dev::ControlMode& mode) {
+  return guarded("getControlMode", j, [&] {
+    const ControlMode m = std::get<GetControlModeReply>(request(j, GetControlMode{}).message).mode;
+    mode = from_board(m);
+    std::lock_guard<std::mutex> lock(mutex_);
+    commanded_mode_[static_cast<std::size_t>(j)] = m;
+  });
+}
+bool RobogeneCan::getControlModes(std::vector<dev::ControlMode>& modes) {
+  return read_each(modes, [&](int j, dev::ControlMode& m) { return getControlMode(j, m); });
+}
+bool RobogeneCan::setControlMode(int j, dev::ControlMode mode) {
+  return guarded("setControlMode", j, [&] {
+    const ControlMode wanted = to_board(mode);
+    send(j, SetControlMode{wanted});
+    // Setting a mode has no reply: ask, so a mode the board refuses is reported, not assumed.
+    const ControlMode now = std::get<GetControlModeReply>(request(j, GetControlMode{}).message).mode;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      commanded_mode_[static_cast<std::size_t>(j)] = now;
+      if (now != ControlMode::velocity) ref_velocity_[static_cast<std::size_t>(j)] = 0.0;
+    }
+    if (now != wanted) {
+      throw Error(std::string("board ") + std::to_string(joint(j).board) + " stayed in mode " + to_string(now) +
+                  " instead of " + to_string(wanted));
+    }
+  });
+}
+bool RobogeneCan::setControlModes(const std::vector<dev::ControlMode>& modes) {
+  return for_each("setControlModes", modes, [&](int j, dev::ControlMode m) { return setControlMode(j, m); });
+}
+
+ROBOGENE_REGISTER_DRIVER(robogene_can, "the head's CAN motor boards (SocketCAN or virtual bus): encoders, position, velocity, PID, control mode",
+                         RobogeneCan);
+
+}  // namespace robogene::can
