@@ -67,7 +67,6 @@ int main(int argc, char** argv) {
     if (t >= seconds) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   }
-  ivel->stop(1);
-  device.close();
+  device.close();  // joint 1 keeps its velocity, as in the paper
   return 0;
 }
