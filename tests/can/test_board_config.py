@@ -15,6 +15,9 @@ from conftest import CC, ROOT
 from robogene_codegen.generate import render
 from robogene_codegen.idl import IdlErrors, compile_directory
 
+# The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
+pytestmark = pytest.mark.timeout(900)
+
 INI = ROOT / "drivers" / "can" / "config" / "head.ini"
 FIRMWARE = ROOT / "hardware" / "electronics" / "firmware"
 PARAMS = ROOT / "hardware" / "head-parameters.yaml"

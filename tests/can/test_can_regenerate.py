@@ -12,6 +12,9 @@ import pytest
 from conftest import CXX, ROOT
 from robogene_codegen.__main__ import main
 
+# The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
+pytestmark = pytest.mark.timeout(900)
+
 NEW_COMMAND = """      - name: get_supply_voltage
         code: 120
         doc: Read the motor supply voltage.

@@ -6,6 +6,9 @@ import random
 
 import pytest
 
+# The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
+pytestmark = pytest.mark.timeout(900)
+
 
 def _edge_values(f, rng):
     bits = 8 * f.size

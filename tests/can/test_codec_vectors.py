@@ -7,6 +7,9 @@ from pathlib import Path
 
 import pytest
 
+# The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
+pytestmark = pytest.mark.timeout(900)
+
 DATA = json.loads((Path(__file__).resolve().parent / "vectors.json").read_text())
 FRAMES = DATA["frames"]
 IDS = [v["text"].split()[0] + "-" + v["origin"] for v in FRAMES]
