@@ -9,7 +9,7 @@ RUNTIME_SOURCES := $(shell find runtime -type f -not -path '*/__pycache__/*' 2>/
 $(BUILD)/build.ninja: CMakeLists.txt runtime/CMakeLists.txt $(STAMPS)/apt-runtime
 	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE)
 
-.PHONY: runtime python test-cpp test-python bench
+.PHONY: runtime python python-stub test-cpp test-python bench
 runtime: $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
@@ -19,6 +19,10 @@ $(STAMPS)/python: $(RUNTIME_SOURCES) $(VENV)/.stamp | $(STAMPS)
 	$(PY) -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps .
 	touch $@
 python: $(STAMPS)/python
+
+# The committed type stub of robogene._core, regenerated from the built module (docs/python.md).
+python-stub: python
+	$(PY) runtime/python/gen_stub.py
 
 test-cpp: runtime
 	cd $(BUILD) && ctest --output-on-failure --no-tests=error -j $(JOBS) --timeout 300
@@ -33,6 +37,7 @@ ALL_TARGETS  += runtime python
 TEST_TARGETS += test-cpp test-python
 HELP_LINES   += "make runtime    build the C++ runtime, CLI and unit tests into build/" \
                 "make python     build and install the Python package into .venv" \
+                "make python-stub regenerate runtime/python/robogene/_core.pyi from the built module" \
                 "make test-cpp   run the C++ unit tests (ctest)" \
                 "make test-python run the Python tests" \
                 "make bench      run the benchmarks and print ratios against raw sockets"

@@ -12,6 +12,8 @@
 * ``cli``           runs one `robogene ...` command against that environment, with a timeout.
 * ``fake_port``     a minimal port in Python (answers the tcp handshake and acks), for tests
                     that need something alive at a registered address.
+* ``network``       a robogene.Network for that name server (the binding's own client).
+* ``python_yarp_env`` points this process's YARP_CONFIG_HOME & co. at the test's private ones.
 """
 from __future__ import annotations
 
@@ -285,3 +287,20 @@ def fake_port():
     yield make
     for p in made:
         p.close()
+
+
+@pytest.fixture
+def network(name_server):
+    """A robogene.Network (the Python name-server client) for the test's `robogene server`."""
+    import robogene
+    return robogene.Network(name_server.address)
+
+
+@pytest.fixture
+def python_yarp_env(yarp_env, monkeypatch) -> dict:
+    """Makes this test process read the test's private YARP configuration, as its CLI children do
+    (so `robogene.Port("/x")` finds the name server through yarp.conf)."""
+    for var in ("YARP_CONFIG_HOME", "YARP_DATA_HOME", "YARP_CACHE_HOME", "YARP_RUNTIME_DIR"):
+        monkeypatch.setenv(var, yarp_env[var])
+    monkeypatch.delenv("YARP_NAMESPACE", raising=False)
+    return yarp_env

@@ -5,12 +5,31 @@
     >>> import robogene
     >>> robogene.Bottle.from_text('[set] [pos] 1 30.3').to_bytes().hex()[:16]
     '0001000004000000'
+
+Ports talk to a name server (``robogene server``, or YARP's ``yarpserver``) found through
+yarp.conf, or through an explicit ``robogene.Network("host:port")``::
+
+    with robogene.RpcServer("/calc", lambda req, info: [req[0].as_int() * 2]):
+        with robogene.RpcClient(server="/calc") as client:
+            client.call([21])          # Bottle.from_text('42')
+
+See docs/python.md.
 """
 from ._core import (  # noqa: F401  (re-exported API)
     Bottle,
+    BufferedPort,
+    BufferPolicy,
+    Contact,
     Error,
+    MessageInfo,
+    NameConfig,
+    Network,
     NetworkError,
     ParseError,
+    Port,
+    RpcClient,
+    RpcServer,
+    Stamp,
     Value,
     __version__,
     vocab,
@@ -19,9 +38,19 @@ from ._core import (  # noqa: F401  (re-exported API)
 
 __all__ = [
     "Bottle",
+    "BufferPolicy",
+    "BufferedPort",
+    "Contact",
     "Error",
+    "MessageInfo",
+    "NameConfig",
+    "Network",
     "NetworkError",
     "ParseError",
+    "Port",
+    "RpcClient",
+    "RpcServer",
+    "Stamp",
     "Value",
     "__version__",
     "vocab",

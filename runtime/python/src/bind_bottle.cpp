@@ -21,14 +21,6 @@ namespace py = pybind11;
 namespace robogene::python {
 namespace {
 
-Value from_python(const py::handle& obj);
-
-Bottle bottle_from_sequence(const py::handle& seq) {
-  Bottle b;
-  for (const py::handle item : seq) b.add(from_python(item));
-  return b;
-}
-
 Value from_python(const py::handle& obj) {
   if (py::isinstance<Value>(obj)) return obj.cast<Value>();
   if (py::isinstance<Bottle>(obj)) return Value::list(obj.cast<Bottle>());
@@ -50,9 +42,19 @@ Value from_python(const py::handle& obj) {
   if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
     return Value::list(bottle_from_sequence(obj));
   }
-  throw py::type_error("cannot put a " + std::string(py::str(obj.get_type().attr("__name__"))) +
+  throw py::type_error("cannot put a " + std::string(py::str(py::type::handle_of(obj).attr("__name__"))) +
                        " in a Bottle (use int, float, str, bytes, list, Value or Bottle)");
 }
+
+}  // namespace
+
+Bottle bottle_from_sequence(const py::handle& seq) {
+  Bottle b;
+  for (const py::handle item : seq) b.add(from_python(item));
+  return b;
+}
+
+namespace {
 
 py::object to_python(const Value& v);
 
@@ -87,7 +89,11 @@ std::string type_label(const Value& v) { return type_name(v.type()); }
 }  // namespace
 
 void bind_bottle(py::module_& m) {
-  py::class_<Value>(m, "Value", py::buffer_protocol(), "One item of a Bottle.")
+  // Both classes exist before either's methods are bound, so every signature (and the type
+  // stub made from them) names Python types, not C++ ones.
+  py::class_<Value> value(m, "Value", py::buffer_protocol(), "One item of a Bottle.");
+  py::class_<Bottle> bottle(m, "Bottle", "A list of Values: YARP 3's Bottle, in binary and text form.");
+  value
       .def(py::init<>())
       .def_static("int8", &Value::int8)
       .def_static("int16", &Value::int16)
@@ -138,7 +144,7 @@ void bind_bottle(py::module_& m) {
                                {static_cast<py::ssize_t>(b.size())}, {1});
       });
 
-  py::class_<Bottle>(m, "Bottle", "A list of Values: YARP 3's Bottle, in binary and text form.")
+  bottle
       .def(py::init<>())
       .def(py::init([](const py::iterable& items) { return bottle_from_sequence(items); }), py::arg("items"))
       .def_static("from_text", [](const std::string& text) { return Bottle::from_text(text); }, py::arg("text"))
@@ -174,6 +180,8 @@ void bind_bottle(py::module_& m) {
       .def("__eq__", [](const Bottle& a, const Bottle& b) { return a == b; })
       .def("__str__", &Bottle::to_text)
       .def("__repr__", [](const Bottle& b) { return "Bottle.from_text(" + std::string(py::repr(py::str(b.to_text()))) + ")"; });
+
+  bind_float_buffers(bottle);
 
   m.def("vocab", [](const std::string& s) { return vocab(s); }, py::arg("chars"),
         "The integer code of a vocab of up to four characters.");

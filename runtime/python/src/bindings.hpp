@@ -6,8 +6,19 @@
 
 #include <pybind11/pybind11.h>
 
+#include "robogene/bottle.hpp"
+
 namespace robogene::python {
 
 void bind_bottle(pybind11::module_& m);
+void bind_float_buffers(pybind11::class_<Bottle>& bottle);
+void bind_contact(pybind11::module_& m);
+void bind_network(pybind11::module_& m);
+void bind_port(pybind11::module_& m);
+void bind_buffered_port(pybind11::module_& m);
+void bind_rpc(pybind11::module_& m);
+
+// A Bottle from a Python sequence, converting each item the way Bottle.add does.
+Bottle bottle_from_sequence(const pybind11::handle& seq);
 
 }  // namespace robogene::python

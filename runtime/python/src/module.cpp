@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "py_support.hpp"
 #include "robogene/error.hpp"
 
 namespace py = pybind11;
@@ -33,4 +34,14 @@ PYBIND11_MODULE(_core, m) {
   });
 
   robogene::python::bind_bottle(m);
+  robogene::python::bind_contact(m);
+  robogene::python::bind_network(m);
+  robogene::python::bind_port(m);
+  robogene::python::bind_buffered_port(m);
+  robogene::python::bind_rpc(m);
+
+  // Ports still open at exit are closed while the interpreter still grants the GIL to the
+  // threads that run their callbacks (later, those threads could never finish).
+  m.def("_close_all_at_exit", &robogene::python::close_all_at_exit);
+  py::module_::import("atexit").attr("register")(m.attr("_close_all_at_exit"));
 }
