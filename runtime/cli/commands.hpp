@@ -19,5 +19,6 @@ int cmd_disconnect(Args& args);
 int cmd_ping(Args& args);
 int cmd_ls(Args& args);
 int cmd_dev(Args& args);
+int cmd_can_sim(Args& args);
 
 }  // namespace robogene::cli
