@@ -21,6 +21,6 @@ test-can: runtime
 test-can-vm: runtime $(STAMPS)/can-vm-parts
 	drivers/can/vm/run-vm-tests.sh --build $(BUILD) --cache $(CAN_VM_CACHE) --out $(CAN_VM_OUT)
 
-TEST_TARGETS += test-can
+TEST_TARGETS += test-can test-can-vm
 HELP_LINES   += "make test-can   run the CAN bus, simulator and driver tests on the virtual bus" \
                 "make test-can-vm run the SocketCAN tests in a qemu VM (Debian kernel, vcan)"
