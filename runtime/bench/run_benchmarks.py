@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""Run every C++ benchmark built from runtime/bench/*.cpp and print what each one reports.
+"""Run every benchmark in runtime/bench/ and print what each one reports.
 
-Each program measures its own raw-socket baseline in the same run and prints a RESULT line with
-the ratio against it; this script only runs them in turn and collects the RESULT lines.
+Each C++ program (*.cpp, built into <build>/bin) measures its own raw-socket baseline in the same
+run; each Python one (bench_*.py, run with this interpreter, which must import robogene) measures
+the C++ figure it is compared with. Every one prints a RESULT line with its ratio; this script
+only runs them in turn and collects the RESULT lines.
 Usage: run_benchmarks.py --build build [--quick]
 """
 import argparse
@@ -12,7 +14,8 @@ import pathlib
 import subprocess
 import sys
 
-QUICK_ARGS = {"bench_rpc": ["--n=5000"], "bench_stream": ["--frames=300"], "bench_fanout": ["--n=2000"]}
+QUICK_ARGS = {"bench_rpc": ["--n=5000"], "bench_stream": ["--frames=300"], "bench_fanout": ["--n=2000"],
+              "bench_python_rpc": ["--n=5000", "--rounds=2"]}
 
 
 def main() -> int:
@@ -20,16 +23,21 @@ def main() -> int:
     parser.add_argument("--build", default="build", help="CMake build folder (programs in <build>/bin)")
     parser.add_argument("--quick", action="store_true", help="fewer iterations, for a smoke run")
     args = parser.parse_args()
-    sources = sorted(pathlib.Path(__file__).resolve().parent.glob("*.cpp"))
+    here = pathlib.Path(__file__).resolve().parent
+    sources = sorted(here.glob("*.cpp")) + sorted(here.glob("bench_*.py"))
     results = []
     failed = False
     for src in sources:
-        exe = pathlib.Path(args.build) / "bin" / src.stem
-        if not exe.exists():
-            print(f"{src.stem}: not built ({exe} missing); run `make runtime` first", file=sys.stderr)
-            failed = True
-            continue
-        cmd = [str(exe)] + (QUICK_ARGS.get(src.stem, []) if args.quick else [])
+        if src.suffix == ".py":
+            cmd = [sys.executable, str(src), "--build", args.build]
+        else:
+            exe = pathlib.Path(args.build) / "bin" / src.stem
+            if not exe.exists():
+                print(f"{src.stem}: not built ({exe} missing); run `make runtime` first", file=sys.stderr)
+                failed = True
+                continue
+            cmd = [str(exe)]
+        cmd += QUICK_ARGS.get(src.stem, []) if args.quick else []
         print(f"== {' '.join(cmd)}", flush=True)
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
         sys.stdout.write(proc.stdout)
