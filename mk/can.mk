@@ -14,7 +14,12 @@ $(STAMPS)/can-vm-parts: drivers/can/vm/fetch-vm-parts.sh $(STAMPS)/apt-can
 	drivers/can/vm/fetch-vm-parts.sh $(CAN_VM_CACHE)
 	touch $@
 
-.PHONY: test-can test-can-vm
+.PHONY: test-can test-can-vm head-sim
+# A simulated head on the virtual bus "head", until Ctrl-C; drive it with
+#   build/bin/robogene dev --device robogene_can --from drivers/can/config/head.ini --bus virtual:head --name /head
+head-sim: runtime
+	$(BUILD)/bin/robogene can-sim --bus virtual:head --from drivers/can/config/head.ini
+
 test-can: runtime
 	cd $(BUILD) && ctest -L can --output-on-failure --no-tests=error -j $(JOBS) --timeout 300
 
@@ -22,5 +27,6 @@ test-can-vm: runtime $(STAMPS)/can-vm-parts
 	drivers/can/vm/run-vm-tests.sh --build $(BUILD) --cache $(CAN_VM_CACHE) --out $(CAN_VM_OUT)
 
 TEST_TARGETS += test-can test-can-vm
-HELP_LINES   += "make test-can   run the CAN bus, simulator and driver tests on the virtual bus" \
+HELP_LINES   += "make head-sim   simulate the head's CAN boards on the virtual bus 'head' (no hardware)" \
+                "make test-can   run the CAN bus, simulator and driver tests on the virtual bus" \
                 "make test-can-vm run the SocketCAN tests in a qemu VM (Debian kernel, vcan)"
