@@ -451,7 +451,7 @@ class BufferedPort:
         """
         Unregisters, tells every peer, and joins the port's threads. Idempotent.
         """
-    def on_read(self, callback: collections.abc.Callable | None) -> None:
+    def on_read(self, callback: collections.abc.Callable[[Bottle, MessageInfo], typing.Any] | None) -> None:
         """
         Calls callback(bottle, info) on the input thread (holding the GIL) for every message instead of buffering it; None goes back to buffering. An exception in the callback goes to sys.unraisablehook. Do not close this port from its own callback.
         """
@@ -585,7 +585,7 @@ class RpcServer:
         ...
     def __exit__(self, arg0: typing.Any, arg1: typing.Any, arg2: typing.Any) -> None:
         ...
-    def __init__(self, name: str | None = None, handler: collections.abc.Callable | None = None, *, network: Network | None = None, at: tuple[str, typing.SupportsInt | typing.SupportsIndex] | None = None, timeout: typing.SupportsFloat | typing.SupportsIndex = 2.0, connect_timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, max_message_size: typing.SupportsInt | typing.SupportsIndex = 67108864) -> None:
+    def __init__(self, name: str | None = None, handler: collections.abc.Callable[[Bottle, MessageInfo], Bottle | list | tuple | None] | None = None, *, network: Network | None = None, at: tuple[str, typing.SupportsInt | typing.SupportsIndex] | None = None, timeout: typing.SupportsFloat | typing.SupportsIndex = 2.0, connect_timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, max_message_size: typing.SupportsInt | typing.SupportsIndex = 67108864) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -617,7 +617,7 @@ class RpcServer:
         """
         Answers the request taken by the last read().
         """
-    def serve(self, handler: collections.abc.Callable | None) -> None:
+    def serve(self, handler: collections.abc.Callable[[Bottle, MessageInfo], Bottle | list | tuple | None] | None) -> None:
         """
         Answers every request with handler(request, info) -> Bottle | list | tuple | None; None goes back to read()/reply(). Do not close this server from its handler.
         """

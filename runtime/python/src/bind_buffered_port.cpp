@@ -45,7 +45,7 @@ std::optional<std::pair<Bottle, MessageInfo>> read_buffered(BufferedPort& bp, co
   return std::make_pair(std::move(*got), std::move(info));
 }
 
-void set_callback(Owned<BufferedPort>& o, const std::optional<py::function>& fn) {
+void set_callback(Owned<BufferedPort>& o, const std::optional<ReadCallback>& fn) {
   BufferedPort::Callback cb;
   std::shared_ptr<void> keep;
   if (fn) {

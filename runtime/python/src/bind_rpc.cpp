@@ -50,7 +50,7 @@ Bottle handler_reply(const PyCallable& call, const void* owner, const Bottle& re
   }
 }
 
-void serve(Owned<RpcServer>& o, const std::optional<py::function>& handler) {
+void serve(Owned<RpcServer>& o, const std::optional<RpcHandler>& handler) {
   std::shared_ptr<void> previous = std::move(o.callback);  // dropped at the end, with the GIL
   if (!handler) {
     o.callback = nullptr;
@@ -107,7 +107,7 @@ void bind_rpc(py::module_& m) {
       m, "RpcServer",
       "Answers requests: with handler(request, info) -> reply on each connection's thread, or "
       "one by one through read() and reply().");
-  server.def(py::init([](const std::optional<std::string>& name, const std::optional<py::function>& handler,
+  server.def(py::init([](const std::optional<std::string>& name, const std::optional<RpcHandler>& handler,
                          const std::optional<NameClient>& network, const std::optional<Address>& at,
                          double timeout, double connect_timeout, std::size_t max_message_size) {
                auto o = make_owned<RpcServer>(port_options(timeout, connect_timeout, max_message_size));

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <pybind11/pybind11.h>
+#include <pybind11/typing.h>
 
 #include <atomic>
 #include <chrono>
@@ -113,6 +114,11 @@ std::shared_ptr<Owned<T>> make_owned(A&&... args) {
   close_at_exit(p, &close_owned_at_exit<T>);
   return p;
 }
+
+// What Python code may pass as a read callback / RPC handler (the types show in the stub).
+using ReadCallback = py::typing::Callable<py::object(const Bottle&, const MessageInfo&)>;
+using RpcHandler = py::typing::Callable<py::typing::Union<Bottle, py::list, py::tuple, py::none>(
+    const Bottle&, const MessageInfo&)>;
 
 class PyCallable {
  public:
