@@ -92,26 +92,30 @@ void BoardLink::send(int board, int axis, const Message& m) {
 
 Envelope BoardLink::request(int board, int axis, const Message& m) {
   std::lock_guard<std::mutex> one(request_mutex_);
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    pending_ = Pending{board, axis, code_of(m), std::nullopt};
-  }
-  try {
-    send(board, axis, m);
-  } catch (...) {
-    std::lock_guard<std::mutex> lock(mutex_);
+  // Asked twice before giving up: requests only read, and one lost frame should not fail a call.
+  for (int attempt = 1; attempt <= 2; ++attempt) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      pending_ = Pending{board, axis, code_of(m), std::nullopt};
+    }
+    try {
+      send(board, axis, m);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      pending_.reset();
+      throw;
+    }
+    std::unique_lock<std::mutex> lock(mutex_);
+    replied_.wait_for(lock, reply_timeout_, [&] { return pending_->reply.has_value() || fault_.has_value(); });
+    std::optional<Envelope> reply = pending_->reply;
     pending_.reset();
-    throw;
+    if (reply) return *reply;
+    if (fault_) throw BusError(BusErrorKind::bus_off, std::string(message_name(m)) + " to board " + std::to_string(board) + ": " + *fault_);
+    if (attempt == 1) log::warn(bus_name_, "board " + std::to_string(board) + " did not answer " + message_name(m) + "; asking again");
   }
-  std::unique_lock<std::mutex> lock(mutex_);
-  replied_.wait_for(lock, reply_timeout_, [&] { return pending_->reply.has_value() || fault_.has_value(); });
-  std::optional<Envelope> reply = pending_->reply;
-  pending_.reset();
-  if (reply) return *reply;
-  if (fault_) throw BusError(BusErrorKind::bus_off, std::string(message_name(m)) + " to board " + std::to_string(board) + ": " + *fault_);
   throw BusError(BusErrorKind::timeout, bus_name_ + ": board " + std::to_string(board) + " axis " + std::to_string(axis) +
                                             " did not answer " + message_name(m) + " within " +
-                                            std::to_string(reply_timeout_.count()) + " ms");
+                                            std::to_string(reply_timeout_.count()) + " ms (asked twice)");
 }
 
 BoardLink::BoardState BoardLink::state(int board) const {

@@ -42,7 +42,8 @@ class BoardLink {
 
   // Throws BusError (the fault in force, or the send's own) or CodecError (a value that does not fit).
   void send(int board, int axis, const Message& m);
-  // Sends and waits for the board's reply; throws BusError(timeout) naming the board, axis and command.
+  // Sends and waits for the board's reply, asking a second time after reply_timeout; throws
+  // BusError(timeout) naming the board, axis and command when neither was answered.
   Envelope request(int board, int axis, const Message& m);
 
   BoardState state(int board) const;
