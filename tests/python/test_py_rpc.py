@@ -97,5 +97,8 @@ def test_client_errors(network):
 def test_network_rpc_one_shot(network):
     with robogene.RpcServer("/py/once", lambda r, i: [i.sender], network=network):
         assert network.rpc("/py/once", robogene.Bottle([1])).to_text() == "anon_rpc"
+        assert network.rpc("/py/once", [1]).to_text() == "anon_rpc"
+        with pytest.raises(TypeError, match="Network.rpc's request must be a Bottle, list or tuple, not int"):
+            network.rpc("/py/once", 1)
     with pytest.raises(robogene.NetworkError, match="no port /py/once is registered"):
         network.rpc("/py/once", robogene.Bottle([1]))

@@ -302,7 +302,7 @@ class Network:
         ...
     def __repr__(self) -> str:
         ...
-    def admin(self, port: str, request: Bottle) -> Bottle:
+    def admin(self, port: str, request: Bottle | list | tuple) -> Bottle:
         """
         Sends one administrative Bottle ([list] [out], [ver] ...) to `port`; returns the reply.
         """
@@ -328,9 +328,9 @@ class Network:
         """
         Sends one raw name-server line ('NAME_SERVER ...\\n'); returns the reply lines.
         """
-    def rpc(self, port: str, request: Bottle, carrier: str = 'tcp', timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0) -> Bottle:
+    def rpc(self, port: str, request: Bottle | list | tuple, carrier: str = 'tcp', timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0) -> Bottle:
         """
-        Sends one request to `port` as an anonymous sender and returns the reply (as `yarp rpc`).
+        Sends one request (Bottle, list or tuple) to `port` as an anonymous sender and returns the reply (as `yarp rpc`).
         """
     def set_property(self, name: str, key: str, values: collections.abc.Sequence[str]) -> None:
         ...
@@ -385,7 +385,7 @@ class Port:
         ...
     def remove_output(self, target: str) -> bool:
         ...
-    def reply(self, bottle: typing.Any) -> None:
+    def reply(self, bottle: Bottle | list | tuple) -> None:
         """
         Answers the message taken by the last read(will_reply=True).
         """
@@ -393,11 +393,11 @@ class Port:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
         """
-    def write(self, bottle: typing.Any) -> bool:
+    def write(self, bottle: Bottle | list | tuple) -> bool:
         """
         Sends to every output; False when there is none that took it.
         """
-    def write_with_reply(self, bottle: typing.Any) -> Bottle | None:
+    def write_with_reply(self, bottle: Bottle | list | tuple) -> Bottle | None:
         """
         Sends to the first output and waits for its reply; None when there is no output or the connection failed (it is then dropped).
         """
@@ -479,7 +479,7 @@ class BufferedPort:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
         """
-    def write(self, bottle: typing.Any | None = None) -> bool:
+    def write(self, bottle: Bottle | list | tuple | None = None) -> bool:
         """
         Sends `bottle`, or the prepared one, to every output; False when no output took it.
         """
@@ -532,7 +532,7 @@ class RpcClient:
         """
         Sends this port's output to `target`: a name ('/r' or 'tcp://r', looked up with the name server) or a Contact (used as it is); `carrier` overrides.
         """
-    def call(self, request: typing.Any) -> Bottle:
+    def call(self, request: Bottle | list | tuple) -> Bottle:
         """
         Sends `request` and returns the reply; raises NetworkError naming the server when not connected or the connection failed.
         """
@@ -613,7 +613,7 @@ class RpcServer:
         ...
     def remove_output(self, target: str) -> bool:
         ...
-    def reply(self, reply: typing.Any) -> None:
+    def reply(self, reply: Bottle | list | tuple) -> None:
         """
         Answers the request taken by the last read().
         """

@@ -101,7 +101,7 @@ void bind_buffered_port(py::module_& m) {
           py::return_value_policy::reference_internal,
           "The (cleared) Bottle the next write() without argument sends; fill it in place.")
       .def("write",
-           [](Owned<BufferedPort>& o, const std::optional<py::object>& bottle) {
+           [](Owned<BufferedPort>& o, const std::optional<BottleLike>& bottle) {
              if (!bottle) {
                py::gil_scoped_release nogil;
                return o.obj.write();

@@ -99,19 +99,23 @@ void bind_network(py::module_& m) {
              return checked(network::disconnect(n, source, target), "disconnect " + source + " -> " + target);
            },
            py::arg("source"), py::arg("target"), py::call_guard<py::gil_scoped_release>())
-      .def("rpc", [](NameClient& n, const std::string& port, const Bottle& request, const std::string& carrier,
+      .def("rpc", [](NameClient& n, const std::string& port, const BottleLike& request, const std::string& carrier,
                      double timeout) {
              const auto t = to_millis(timeout, "timeout");
+             const Bottle b = to_bottle(request, "Network.rpc's request");
+             py::gil_scoped_release nogil;
              Contact to = registered(n, port);
-             return network::rpc(to, request, carrier, "anon_rpc", t ? *t : net::kNoTimeout);
+             return network::rpc(to, b, carrier, "anon_rpc", t ? *t : net::kNoTimeout);
            },
            py::arg("port"), py::arg("request"), py::arg("carrier") = "tcp", py::arg("timeout") = 5.0,
-           py::call_guard<py::gil_scoped_release>(),
-           "Sends one request to `port` as an anonymous sender and returns the reply (as `yarp rpc`).")
-      .def("admin", [](NameClient& n, const std::string& port, const Bottle& request) {
-             return network::admin(registered(n, port), request);
+           "Sends one request (Bottle, list or tuple) to `port` as an anonymous sender and returns "
+           "the reply (as `yarp rpc`).")
+      .def("admin", [](NameClient& n, const std::string& port, const BottleLike& request) {
+             const Bottle b = to_bottle(request, "Network.admin's request");
+             py::gil_scoped_release nogil;
+             return network::admin(registered(n, port), b);
            },
-           py::arg("port"), py::arg("request"), py::call_guard<py::gil_scoped_release>(),
+           py::arg("port"), py::arg("request"),
            "Sends one administrative Bottle ([list] [out], [ver] ...) to `port`; returns the reply.")
       .def("__repr__", [](const NameClient& n) { return "Network(server=" + std::string(py::repr(py::str(n.server().to_string()))) + ")"; });
 }

@@ -47,14 +47,14 @@ void bind_port(py::module_& m) {
           "messages are refused.");
   def_port_common<Port>(cls, "Port", true);
   cls.def("write",
-          [](Owned<Port>& o, const py::object& bottle) {
+          [](Owned<Port>& o, const BottleLike& bottle) {
             BottleArg b(bottle, "Port.write");
             py::gil_scoped_release nogil;
             return o.obj.write(b.get());
           },
           py::arg("bottle"), "Sends to every output; False when there is none that took it.")
       .def("write_with_reply",
-           [](Owned<Port>& o, const py::object& bottle) -> std::optional<Bottle> {
+           [](Owned<Port>& o, const BottleLike& bottle) -> std::optional<Bottle> {
              BottleArg b(bottle, "Port.write_with_reply");
              Bottle reply;
              py::gil_scoped_release nogil;
@@ -78,7 +78,7 @@ void bind_port(py::module_& m) {
            py::arg("timeout") = py::none(), py::kw_only(), py::arg("will_reply") = false,
            "As read(), returning (bottle, MessageInfo) with the sender, carrier and envelope.")
       .def("reply",
-           [](Owned<Port>& o, const py::object& bottle) {
+           [](Owned<Port>& o, const BottleLike& bottle) {
              BottleArg b(bottle, "Port.reply");
              py::gil_scoped_release nogil;
              o.obj.reply(b.get());

@@ -94,7 +94,7 @@ void bind_rpc(py::module_& m) {
            "Connects to the server port (a name, or a Contact to skip the name server), replacing "
            "any previous one.")
       .def("call",
-           [](Owned<RpcClient>& o, const py::object& request) {
+           [](Owned<RpcClient>& o, const BottleLike& request) {
              BottleArg b(request, "RpcClient.call");
              py::gil_scoped_release nogil;
              return o.obj.call(b.get());
@@ -135,7 +135,7 @@ void bind_rpc(py::module_& m) {
            [](Owned<RpcServer>& o, const std::optional<double>& timeout) { return read_port(o.obj.port(), timeout, true); },
            py::arg("timeout") = py::none(), "As read(), returning (request, MessageInfo).")
       .def("reply",
-           [](Owned<RpcServer>& o, const py::object& bottle) {
+           [](Owned<RpcServer>& o, const BottleLike& bottle) {
              BottleArg b(bottle, "RpcServer.reply");
              py::gil_scoped_release nogil;
              o.obj.reply(b.get());

@@ -115,6 +115,9 @@ std::shared_ptr<Owned<T>> make_owned(A&&... args) {
   return p;
 }
 
+// What Python code may pass where a Bottle is written (converted by to_bottle).
+using BottleLike = py::typing::Union<Bottle, py::list, py::tuple>;
+
 // What Python code may pass as a read callback / RPC handler (the types show in the stub).
 using ReadCallback = py::typing::Callable<py::object(const Bottle&, const MessageInfo&)>;
 using RpcHandler = py::typing::Callable<py::typing::Union<Bottle, py::list, py::tuple, py::none>(
