@@ -4,7 +4,7 @@
 # The head's CAN boards (drivers/can): bus backends, board simulator, robogene_can driver.
 #   make test-can     the CAN tests (virtual bus between processes; no kernel CAN needed)
 #   make test-can-vm  the SocketCAN tests inside a qemu VM that boots Debian's stock kernel with vcan
-#                     (this machine's kernel may have no CAN); logs in build/can-vm/
+#                     (this machine's kernel may have no CAN); logs in build/can-vm/, decoded by cantools
 
 CAN_VM_CACHE := $(BUILD)/cache/can-vm
 CAN_VM_OUT   := $(BUILD)/can-vm
@@ -23,8 +23,11 @@ head-sim: runtime
 test-can: runtime
 	cd $(BUILD) && ctest -L can --output-on-failure --no-tests=error -j $(JOBS) --timeout 300
 
-test-can-vm: runtime $(STAMPS)/can-vm-parts
+# Then cantools (installed by mk/codegen.mk) decodes the session's logs with the generated DBC.
+test-can-vm: runtime $(STAMPS)/can-vm-parts $(STAMPS)/py-can
 	drivers/can/vm/run-vm-tests.sh --build $(BUILD) --cache $(CAN_VM_CACHE) --out $(CAN_VM_OUT)
+	$(PY) drivers/can/vm/decode_with_cantools.py drivers/can/generated/head.dbc \
+	  $(CAN_VM_OUT)/candump-vcan0.log $(CAN_VM_OUT)/can-sim.log $(CAN_VM_OUT)/robogene_can.log
 
 TEST_TARGETS += test-can test-can-vm
 HELP_LINES   += "make head-sim   simulate the head's CAN boards on the virtual bus 'head' (no hardware)" \

@@ -103,7 +103,7 @@ VirtualBus::~VirtualBus() {
 }
 
 void VirtualBus::set_filters(const std::vector<Filter>& filters) {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<std::mutex> lock(filters_mutex_);
   filters_ = filters;
 }
 
@@ -240,7 +240,7 @@ std::optional<Frame> VirtualBus::receive(Millis timeout) {
     f.len = d[8];
     std::memcpy(f.data.data(), d + 12, f.len);
     {
-      std::lock_guard<std::mutex> lock(mutex_);
+      std::lock_guard<std::mutex> lock(filters_mutex_);
       if (!passes(filters_, f.id)) continue;
     }
     return f;

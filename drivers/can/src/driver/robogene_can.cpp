@@ -230,6 +230,7 @@ void RobogeneCan::refresh_velocities() {
   const auto period = Millis(std::max(5, head_.velocity_timeout_ms / 4));
   while (running_) {
     std::this_thread::sleep_for(period);
+    if (link_->fault()) continue;  // commands fail with the fault already; no need to log it 40 times a second
     for (std::size_t j = 0; j < head_.joints.size(); ++j) {
       double v = 0;
       {

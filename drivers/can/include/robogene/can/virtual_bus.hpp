@@ -61,6 +61,7 @@ class VirtualBus final : public Bus {
   mutable std::mutex mutex_;
   std::map<std::string, Peer> peers_;
   std::int64_t listed_mtime_ns_ = -1;
+  mutable std::mutex filters_mutex_;  // apart from mutex_, so a send waiting on a peer never blocks receive
   std::vector<Filter> filters_;
   std::uint64_t dropped_ = 0;
 };
