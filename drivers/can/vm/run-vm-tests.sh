@@ -114,11 +114,13 @@ qemu_rc=${PIPESTATUS[0]}
 set -e
 echo "run-vm-tests: qemu exited with $qemu_rc after $(( $(date +%s) - start ))s"
 
-grep -q 'ROBOGENE_CAN_VM_BOOTED' "$out/console.log" ||
+timed_out=0
+if [ "$qemu_rc" -eq 124 ] || [ "$qemu_rc" -eq 137 ]; then timed_out=1; fi
+if ! grep -q 'ROBOGENE_CAN_VM_BOOTED' "$out/console.log"; then
+  [ $timed_out = 1 ] && die "the VM's kernel did not reach /init within ${timeout_s}s (a hang at boot?); see $out/console.log"
   die "the VM's kernel never reached /init (qemu exit $qemu_rc); see $out/console.log"
-if [ "$qemu_rc" -eq 124 ] || [ "$qemu_rc" -eq 137 ]; then
-  die "the VM did not finish within ${timeout_s}s; see $out/console.log"
 fi
+[ $timed_out = 1 ] && die "the VM booted but did not finish its tests within ${timeout_s}s; see $out/console.log"
 vm_rc=$(sed -n 's/.*ROBOGENE_CAN_VM_RC=\([0-9]*\).*/\1/p' "$out/console.log" | tail -1)
 [ -n "$vm_rc" ] || die "the VM stopped without reporting a result (qemu exit $qemu_rc); see $out/console.log"
 case "$vm_rc" in
