@@ -47,9 +47,21 @@ inline pid_t start_simulator(const std::string& bus, const std::string& log) {
   return pid;
 }
 
+// Ends the simulator however the test leaves (a failed ASSERT returns early).
+struct ChildGuard {
+  pid_t pid;
+  ~ChildGuard() {
+    if (pid > 0) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, nullptr, 0);
+    }
+  }
+};
+
 inline void run_head_session(const std::string& bus, const std::string& log_dir) {
   const std::string sim_log = log_dir + "/can-sim.log", driver_log = log_dir + "/robogene_can.log";
-  const pid_t sim = start_simulator(bus, sim_log);
+  ChildGuard sim_guard{start_simulator(bus, sim_log)};
+  const pid_t sim = sim_guard.pid;
   ASSERT_GT(sim, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // let it open the bus
   const HeadConfig head = head_config();
@@ -97,6 +109,7 @@ inline void run_head_session(const std::string& bus, const std::string& log_dir)
   ::kill(sim, SIGTERM);
   int status = 0;
   ASSERT_EQ(::waitpid(sim, &status, 0), sim);
+  sim_guard.pid = 0;
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "can-sim exit status " << status;
 
   // Both logs are candump's format and hold what each side saw.
