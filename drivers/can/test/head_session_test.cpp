@@ -1,5 +1,9 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
 #include "cli_head_session.hpp"
 #include "socketcan_env.hpp"
 #include "test_bus_dir.hpp"
@@ -20,6 +24,31 @@ TEST(CanHeadOverSocketCan, CanSimProcessAndDriverMoveEveryJoint) {
   const char* logs = std::getenv("ROBOGENE_CAN_LOG_DIR");
   ASSERT_NE(logs, nullptr) << "set ROBOGENE_CAN_LOG_DIR";
   testing::run_head_session("socketcan:" + iface, logs);
+}
+
+// `robogene can-sim` with a bad config: exit status 1 and the field named.
+TEST(CanSimCli, ABadConfigIsNamedAndTheExitStatusIsOne) {
+  testing::TempBusDir dir;
+  const std::string bad = dir.path() + "/bad.ini";
+  {
+    std::ifstream in(testing::head_ini_path());
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string ini = text.str();
+    const auto at = ini.find("\naxis ");
+    ini.replace(at + 1, ini.find('\n', at + 1) - at - 1, "axis 0 1 0 1 0 7");
+    std::ofstream(bad) << ini;
+  }
+  const std::string cmd = testing::robogene_bin() + " can-sim --bus virtual:cli --from " + bad + " --duration 1 2>&1";
+  FILE* p = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  const int status = ::pclose(p);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << out;
+  EXPECT_NE(out.find("bad.ini:"), std::string::npos) << out;
+  EXPECT_NE(out.find("[GENERAL] key 'axis': value 6 (7) is outside [0, 1]"), std::string::npos) << out;
 }
 
 }  // namespace
