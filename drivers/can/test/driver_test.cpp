@@ -155,6 +155,24 @@ TEST_F(DriverOnVirtualBus, ModesTheBoardsDoNotHaveAreReportedNotAssumed) {
   EXPECT_NE(driver->last_error().find("no joint 6"), std::string::npos) << driver->last_error();
 }
 
+TEST_F(DriverOnVirtualBus, AVectorWithOneBadEntryChangesNothing) {
+  std::vector<double> before;
+  ASSERT_TRUE(pos_->getTargetPositions(before));
+  std::vector<double> targets(6, 5.0);
+  targets[3] = std::nan("");
+  EXPECT_FALSE(pos_->positionMove(targets));
+  EXPECT_FALSE(pos_->positionMove(std::vector<double>(5, 1.0)));
+  std::vector<double> speeds(6, 20.0);
+  speeds[5] = -1.0;
+  EXPECT_FALSE(pos_->setRefSpeeds(speeds));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  std::vector<double> after, ref_speeds;
+  ASSERT_TRUE(pos_->getTargetPositions(after));
+  EXPECT_EQ(after, before);
+  ASSERT_TRUE(pos_->getRefSpeeds(ref_speeds));
+  EXPECT_EQ(ref_speeds, std::vector<double>(6, 10.0));
+}
+
 TEST_F(DriverOnVirtualBus, BusOffSurfacesAsFailuresUntilTheControllerRestarts) {
   RobogeneCan* driver = nullptr;
   ASSERT_TRUE(device_.view(driver));

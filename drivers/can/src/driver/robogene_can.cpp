@@ -50,6 +50,29 @@ std::int16_t to_i16(double v, const char* field) {
   return static_cast<std::int16_t>(v);
 }
 
+std::string finite_value(double v) { return std::isfinite(v) ? "" : std::to_string(v) + " is not finite"; }
+std::string positive_value(double v) {
+  return std::isfinite(v) && v > 0 ? "" : std::to_string(v) + " is not a positive number";
+}
+
+// Why the boards cannot take these gains ("" when they can).
+std::string pid_problem(const dev::Pid& pid) {
+  try {
+    to_i16(pid.kp, "kp");
+    to_i16(pid.ki, "ki");
+    to_i16(pid.kd, "kd");
+    to_i16(pid.offset, "offset");
+    to_i16(pid.max_output, "max_output");
+    to_i16(pid.max_int, "max_int");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  if (!(pid.scale >= 0 && pid.scale <= 15 && pid.scale == std::floor(pid.scale))) {
+    return "PID scale (shift) " + std::to_string(pid.scale) + " is not an integer in 0..15";
+  }
+  return "";
+}
+
 }  // namespace
 
 // ---- plumbing ----------------------------------------------------------------------------------
@@ -69,13 +92,19 @@ bool RobogeneCan::guarded(const char* what, int j, F&& f) {
   }
 }
 
-template <class T, class F>
-bool RobogeneCan::for_each(const char* what, const std::vector<T>& values, F&& f) {
-  if (values.size() != head_.joints.size()) {
-    return guarded(what, -1, [&] {
+template <class T, class Check, class F>
+bool RobogeneCan::for_each(const char* what, const std::vector<T>& values, Check&& check, F&& f) {
+  // Every value is checked before anything is sent, so one bad entry changes nothing.
+  const bool valid = guarded(what, -1, [&] {
+    if (values.size() != head_.joints.size()) {
       throw Error(std::to_string(values.size()) + " values for " + std::to_string(head_.joints.size()) + " joints");
-    });
-  }
+    }
+    for (std::size_t j = 0; j < values.size(); ++j) {
+      const std::string problem = check(values[j]);
+      if (!problem.empty()) throw Error("value " + std::to_string(j) + ": " + problem);
+    }
+  });
+  if (!valid) return false;
   bool ok = true;
   for (std::size_t j = 0; j < values.size(); ++j) ok = f(static_cast<int>(j), values[j]) && ok;
   return ok;
@@ -261,7 +290,7 @@ bool RobogeneCan::setRefAcceleration(int j, double acc) {
   });
 }
 bool RobogeneCan::setRefAccelerations(const std::vector<double>& accs) {
-  return for_each("setRefAccelerations", accs, [&](int j, double a) { return setRefAcceleration(j, a); });
+  return for_each("setRefAccelerations", accs, positive_value, [&](int j, double a) { return setRefAcceleration(j, a); });
 }
 bool RobogeneCan::getRefAcceleration(int j, double& acc) {
   return guarded("getRefAcceleration", j, [&] {
@@ -335,7 +364,7 @@ bool RobogeneCan::setEncoder(int j, double val) {
   });
 }
 bool RobogeneCan::setEncoders(const std::vector<double>& vals) {
-  return for_each("setEncoders", vals, [&](int j, double v) { return setEncoder(j, v); });
+  return for_each("setEncoders", vals, finite_value, [&](int j, double v) { return setEncoder(j, v); });
 }
 
 // ---- IPositionControl --------------------------------------------------------------------------
@@ -353,14 +382,14 @@ bool RobogeneCan::positionMove(int j, double ref) {
   });
 }
 bool RobogeneCan::positionMove(const std::vector<double>& refs) {
-  return for_each("positionMove", refs, [&](int j, double r) { return positionMove(j, r); });
+  return for_each("positionMove", refs, finite_value, [&](int j, double r) { return positionMove(j, r); });
 }
 bool RobogeneCan::relativeMove(int j, double delta) {
   double target = 0;
   return getTargetPosition(j, target) && positionMove(j, target + delta);
 }
 bool RobogeneCan::relativeMove(const std::vector<double>& deltas) {
-  return for_each("relativeMove", deltas, [&](int j, double d) { return relativeMove(j, d); });
+  return for_each("relativeMove", deltas, finite_value, [&](int j, double d) { return relativeMove(j, d); });
 }
 bool RobogeneCan::checkMotionDone(int j, bool& flag) {
   return guarded("checkMotionDone", j, [&] { flag = std::get<MotionDoneReply>(request(j, MotionDone{}).message).done; });
@@ -384,7 +413,7 @@ bool RobogeneCan::setRefSpeed(int j, double sp) {
   });
 }
 bool RobogeneCan::setRefSpeeds(const std::vector<double>& sps) {
-  return for_each("setRefSpeeds", sps, [&](int j, double s) { return setRefSpeed(j, s); });
+  return for_each("setRefSpeeds", sps, positive_value, [&](int j, double s) { return setRefSpeed(j, s); });
 }
 bool RobogeneCan::getRefSpeed(int j, double& sp) {
   return guarded("getRefSpeed", j, [&] {
@@ -422,7 +451,7 @@ bool RobogeneCan::velocityMove(int j, double sp) {
   });
 }
 bool RobogeneCan::velocityMove(const std::vector<double>& sps) {
-  return for_each("velocityMove", sps, [&](int j, double s) { return velocityMove(j, s); });
+  return for_each("velocityMove", sps, finite_value, [&](int j, double s) { return velocityMove(j, s); });
 }
 bool RobogeneCan::getRefVelocity(int j, double& vel) {
   return guarded("getRefVelocity", j, [&] {
@@ -446,9 +475,8 @@ void RobogeneCan::only_position(dev::PidType type) const {
 bool RobogeneCan::setPid(dev::PidType pidtype, int j, const dev::Pid& pid) {
   return guarded("setPid", j, [&] {
     only_position(pidtype);
-    if (!(pid.scale >= 0 && pid.scale <= 15 && pid.scale == std::floor(pid.scale))) {
-      throw Error("PID scale (shift) " + std::to_string(pid.scale) + " is not an integer in 0..15");
-    }
+    const std::string problem = pid_problem(pid);
+    if (!problem.empty()) throw Error(problem);
     const SetPositionPid gains{to_i16(pid.kp, "kp"), to_i16(pid.ki, "ki"), to_i16(pid.kd, "kd"), static_cast<std::uint8_t>(pid.scale)};
     const SetPositionPidLimits limits{to_i16(pid.offset, "offset"), to_i16(pid.max_output, "max_output"),
                                       to_i16(pid.max_int, "max_int")};
@@ -457,7 +485,7 @@ bool RobogeneCan::setPid(dev::PidType pidtype, int j, const dev::Pid& pid) {
   });
 }
 bool RobogeneCan::setPids(dev::PidType pidtype, const std::vector<dev::Pid>& pids) {
-  return for_each("setPids", pids, [&](int j, const dev::Pid& p) { return setPid(pidtype, j, p); });
+  return for_each("setPids", pids, pid_problem, [&](int j, const dev::Pid& p) { return setPid(pidtype, j, p); });
 }
 bool RobogeneCan::getPid(dev::PidType pidtype, int j, dev::Pid& pid) {
   return guarded("getPid", j, [&] {
@@ -489,7 +517,7 @@ bool RobogeneCan::setPidReference(dev::PidType pidtype, int j, double ref) {
   });
 }
 bool RobogeneCan::setPidReferences(dev::PidType pidtype, const std::vector<double>& refs) {
-  return for_each("setPidReferences", refs, [&](int j, double r) { return setPidReference(pidtype, j, r); });
+  return for_each("setPidReferences", refs, finite_value, [&](int j, double r) { return setPidReference(pidtype, j, r); });
 }
 bool RobogeneCan::getPidReference(dev::PidType pidtype, int j, double& ref) {
   return guarded("getPidReference", j, [&] {
@@ -504,7 +532,7 @@ bool RobogeneCan::setPidErrorLimit(dev::PidType, int j, double) {
   return guarded("setPidErrorLimit", j, [&] { throw Error("the boards' protocol has no PID error limit"); });
 }
 bool RobogeneCan::setPidErrorLimits(dev::PidType pidtype, const std::vector<double>& limits) {
-  return for_each("setPidErrorLimits", limits, [&](int j, double l) { return setPidErrorLimit(pidtype, j, l); });
+  return for_each("setPidErrorLimits", limits, finite_value, [&](int j, double l) { return setPidErrorLimit(pidtype, j, l); });
 }
 bool RobogeneCan::getPidErrorLimit(dev::PidType, int j, double&) {
   return guarded("getPidErrorLimit", j, [&] { throw Error("the boards' protocol has no PID error limit"); });
@@ -565,7 +593,7 @@ bool RobogeneCan::setControlMode(int j, dev::ControlMode mode) {
   });
 }
 bool RobogeneCan::setControlModes(const std::vector<dev::ControlMode>& modes) {
-  return for_each("setControlModes", modes, [&](int j, dev::ControlMode m) { return setControlMode(j, m); });
+  return for_each("setControlModes", modes, [](dev::ControlMode m) { return m == dev::ControlMode::unknown ? std::string("mode unknown cannot be set") : std::string(); }, [&](int j, dev::ControlMode m) { return setControlMode(j, m); });
 }
 
 ROBOGENE_REGISTER_DRIVER(robogene_can, "the head's CAN motor boards (SocketCAN or virtual bus): encoders, position, velocity, PID, control mode",

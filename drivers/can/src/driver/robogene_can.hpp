@@ -112,8 +112,9 @@ class RobogeneCan final : public dev::DeviceDriver,
   // Runs f(), turning a thrown robogene::Error into a logged false return.
   template <class F>
   bool guarded(const char* what, int j, F&& f);
-  template <class T, class F>
-  bool for_each(const char* what, const std::vector<T>& values, F&& f);
+  // Checks every value with check() (a problem, or ""), then runs f(j, value) for each joint.
+  template <class T, class Check, class F>
+  bool for_each(const char* what, const std::vector<T>& values, Check&& check, F&& f);
   template <class T, class F>
   bool read_each(std::vector<T>& out, F&& f);
   const JointConfig& joint(int j) const;
