@@ -193,3 +193,17 @@ def test_value_types():
     assert robogene.Stamp.parse("not a stamp") is None
     assert robogene.Stamp(3, 0.25).to_text() == "3 0.25"
     assert robogene.BufferPolicy.STRICT != robogene.BufferPolicy.LATEST_ONLY
+
+
+def test_network_register_query_unregister(network, name_server):
+    assert (network.host, network.port, network.address) == (name_server.host, name_server.port, name_server.address)
+    recorded = network.register("/py/by-hand", "tcp", "127.0.0.1", 15001)
+    assert recorded == robogene.Contact("/py/by-hand", "tcp", "127.0.0.1", 15001)
+    assert network.query("/py/by-hand") == recorded
+    network.set_property("/py/by-hand", "offers", ["tcp", "text"])
+    assert network.request("NAME_SERVER get /py/by-hand offers\n") == ["port /py/by-hand property offers = tcp text"]
+    chosen = network.register("/py/chosen")
+    assert chosen.port > 0 and chosen.host
+    network.unregister("/py/by-hand")
+    assert network.query("/py/by-hand") is None
+    assert [c.name for c in network.list("/py/")] == ["/py/chosen"]
