@@ -138,21 +138,29 @@ HttpPlan plan_http_request(const HttpRequest& r) {
   } else if (data) {
     s = (plan.admin ? "a\n" : "d\n") + *data;
   } else {
-    s = url_decode(r.target);
+    s = r.target;
   }
   bool classic = s.size() <= 1 || s[0] == '?' || s[1] == '?' || starts_with(s, "d\n") ||
                  starts_with(s, "a\n") || starts_with(s, "form") || starts_with(s, "data") ||
                  starts_with(s, "favi");
   if (!classic) {
-    // "get/axes?x=1" -> the data message "get axes" (YARP also appends the fields as a list)
-    std::string words = s.substr(0, s.find('?'));
-    for (char& c : words) {
-      if (c == '/') c = ' ';
+    // "get/axes?x=1" -> the data message "get axes"; each segment is decoded after the split,
+    // so "%2Froot" stays one word "/root" (YARP also appends the fields as a list).
+    std::string path = s.substr(0, s.find('?'));
+    std::string words;
+    std::size_t at = 0;
+    while (at <= path.size()) {
+      std::size_t end = path.find('/', at);
+      if (end == std::string::npos) end = path.size();
+      if (!words.empty()) words += ' ';
+      words += url_decode(path.substr(at, end - at));
+      at = end + 1;
     }
     plan.kind = HttpPlan::Kind::Call;
     plan.lines = {words};
     return plan;
   }
+  s = url_decode(s);
   if (s == "r") {
     plan.kind = HttpPlan::Kind::Stream;
     return plan;
