@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstring>
 #include <random>
+#include <thread>
 
 #include "robogene/error.hpp"
 
@@ -66,6 +67,17 @@ void init_ring(ShmRing& r, std::uint32_t capacity, std::uint64_t offset) {
   pthread_cond_init(&r.readable, &ca);
   pthread_cond_init(&r.writable, &ca);
   pthread_condattr_destroy(&ca);
+}
+
+// The other side usually answers within microseconds (an ack, the next block of a frame):
+// looking a little while before sleeping saves the futex round trip of a wake-up.
+template <typename Ready>
+bool spin_until(Ready&& ready) {
+  for (int i = 0; i < 4000; ++i) {
+    if (ready()) return true;
+    if ((i & 63) == 63) std::this_thread::yield();
+  }
+  return false;
 }
 
 std::string fresh_name() {
@@ -178,6 +190,7 @@ std::size_t ShmStream::wait_for_bytes(net::Millis timeout, bool at_message_start
       fail("vanished in the middle of a message");
     }
     if (Clock::now() >= until) fail("sent nothing for " + std::to_string(timeout.count()) + " ms (timed out)");
+    if (spin_until([&] { return r_.head.load(std::memory_order_acquire) != t; })) continue;
     lock(&r_.mutex);
     r_.reader_waiting.store(1);
     if (r_.head.load() == t && !r_.closed.load()) wait_until(&r_.readable, &r_.mutex, until);
@@ -195,6 +208,7 @@ std::size_t ShmStream::wait_for_space(net::Millis timeout) {
     if (h - t < r_.capacity) return static_cast<std::size_t>(r_.capacity - (h - t));
     if (!alive_()) fail("vanished");
     if (Clock::now() >= until) fail("did not take our bytes for " + std::to_string(timeout.count()) + " ms (timed out)");
+    if (spin_until([&] { return r_.tail.load(std::memory_order_acquire) != t; })) continue;
     lock(&r_.mutex);
     r_.writer_waiting.store(1);
     if (r_.tail.load() == t && !r_.closed.load()) wait_until(&r_.writable, &r_.mutex, until);
