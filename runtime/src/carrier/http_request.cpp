@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdlib>
 
+#include "robogene/bottle.hpp"
 #include "robogene/error.hpp"
 
 namespace robogene::carrier::detail {
@@ -20,6 +21,15 @@ std::string lower(std::string s) {
 }
 
 bool starts_with(const std::string& s, const char* p) { return s.rfind(p, 0) == 0; }
+
+// What YARP appends to a call: (REQUEST_URI "<target>") then every field as (key value), e.g.
+// `set pos 1 (REQUEST_URI "set/pos/1?x=1") (x "1")` (order checked against YARP 3.5.0).
+std::string fields_as_text(const HttpRequest& r) {
+  Bottle b;
+  b.add(Value::list(Bottle{Value("REQUEST_URI"), Value(r.target)}));
+  for (const auto& f : r.fields) b.add(Value::list(Bottle{Value(f.first), Value(f.second)}));
+  return b.to_text();
+}
 
 }  // namespace
 
@@ -129,7 +139,7 @@ HttpPlan plan_http_request(const HttpRequest& r) {
   plan.json = (format && *format == "json") || (req && !format);
   if (req) {  // ?req=get axes: a call whose reply comes back as JSON
     plan.kind = HttpPlan::Kind::Call;
-    plan.lines = {*req};
+    plan.lines = {*req + " " + fields_as_text(r)};
     return plan;
   }
   std::string s;
@@ -145,7 +155,7 @@ HttpPlan plan_http_request(const HttpRequest& r) {
                  starts_with(s, "favi");
   if (!classic) {
     // "get/axes?x=1" -> the data message "get axes"; each segment is decoded after the split,
-    // so "%2Froot" stays one word "/root" (YARP also appends the fields as a list).
+    // so "%2Froot" stays one word "/root"; then the fields, as YARP appends them.
     std::string path = s.substr(0, s.find('?'));
     std::string words;
     std::size_t at = 0;
@@ -157,7 +167,7 @@ HttpPlan plan_http_request(const HttpRequest& r) {
       at = end + 1;
     }
     plan.kind = HttpPlan::Kind::Call;
-    plan.lines = {words};
+    plan.lines = {words + " " + fields_as_text(r)};
     return plan;
   }
   s = url_decode(s);

@@ -95,14 +95,21 @@ TEST(HttpCarrier, PathCallsAnswerAsTextOrJson) {
   Echo echo;
   p.set_reader(echo.reader());
   open_local(p, "/hr", t);
+  // As YARP: the words of the path, then the request target and the fields as lists.
   std::string r = http(p, "GET /get/axes HTTP/1.1\r\n\r\n");
   EXPECT_NE(r.find("Content-Type: text/plain"), std::string::npos) << r;
-  EXPECT_EQ(body_of(r), "is get axes 4 (web_safe \"<b>\")\r\n");
+  EXPECT_EQ(body_of(r), "is get axes (REQUEST_URI \"get/axes\") 4 (web_safe \"<b>\")\r\n");
   r = http(p, "GET /get/axes?format=json HTTP/1.1\r\n\r\n");
   EXPECT_NE(r.find("Content-Type: application/json"), std::string::npos) << r;
-  EXPECT_EQ(body_of(r), "[\"is\", \"get\", \"axes\", 4, [\"web_safe\", \"<b>\"]]");
+  EXPECT_EQ(body_of(r),
+            "[\"is\", \"get\", \"axes\", [\"REQUEST_URI\", \"get/axes?format=json\"], [\"format\", \"json\"], 4, "
+            "[\"web_safe\", \"<b>\"]]");
   r = http(p, "GET /?req=get+pos+1.5 HTTP/1.1\r\n\r\n");
-  EXPECT_EQ(body_of(r), "[\"is\", \"get\", \"pos\", 1.5, 4, [\"web_safe\", \"<b>\"]]");
+  EXPECT_EQ(body_of(r),
+            "[\"is\", \"get\", \"pos\", 1.5, [\"REQUEST_URI\", \"?req=get+pos+1.5\"], [\"req\", \"get pos 1.5\"], 4, "
+            "[\"web_safe\", \"<b>\"]]");
+  std::lock_guard<std::mutex> lock(echo.mutex);
+  EXPECT_EQ(echo.got.at(0), "web http: get axes (REQUEST_URI \"get/axes\")");
 }
 
 TEST(HttpCarrier, ReadStreamsWhatThePortWritesUntilTheBrowserLeaves) {
