@@ -3,10 +3,37 @@
 #include "robogene/dev/nws/controlboard_nws.hpp"
 
 #include "robogene/dev/joint_data.hpp"
+#include "robogene/dev/nws/group_requests.hpp"
 #include "robogene/dev/nws/device_port.hpp"
 #include "robogene/envelope.hpp"
 
 namespace robogene::dev {
+namespace {
+
+bool all_ok(ControlboardServer& server, const std::vector<Bottle>& requests) {
+  bool ok = !requests.empty();
+  for (const Bottle& r : requests) {
+    const Bottle reply = server.respond(r);
+    ok = reply.size() == 1 && reply[0].to_text() == "[ok]" && ok;
+  }
+  return ok;
+}
+
+// An RPC request, group forms included.
+Bottle answer(ControlboardServer& server, const Bottle& request) {
+  if (auto group = expand_group_request(request)) {
+    return Bottle{Value::vocab(all_ok(server, *group) ? "ok" : "fail")};
+  }
+  return server.respond(request);
+}
+
+// A command-port message, group forms included.
+bool carry_out(ControlboardServer& server, const Bottle& message) {
+  if (auto group = expand_group_command(message)) return all_ok(server, *group);
+  return server.command(message);
+}
+
+}  // namespace
 
 void ControlboardNws::open(DeviceDriver& device, const Searchable& config) {
   close();
@@ -21,13 +48,13 @@ void ControlboardNws::open(DeviceDriver& device, const Searchable& config) {
   const bool single = single_port_;
   rpc_.set_reader([server, single](const Bottle& data, const MessageInfo&, Bottle* reply) {
     if (reply) {
-      *reply = server->respond(data);
-    } else if (single && !server->command(data)) {
-      server->respond(data);  // a request sent without waiting for the answer still acts
+      *reply = answer(*server, data);
+    } else if (single && !carry_out(*server, data)) {
+      answer(*server, data);  // a request sent without waiting for the answer still acts
     }
   });
   command_.set_reader([server](const Bottle& data, const MessageInfo&, Bottle* reply) {
-    const bool done = server->command(data);
+    const bool done = carry_out(*server, data);
     if (reply) *reply = Bottle{Value::vocab(done ? "ok" : "fail")};
   });
   try {

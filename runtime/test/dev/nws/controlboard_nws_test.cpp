@@ -188,6 +188,16 @@ TEST(ControlboardNws, CommandPortTakesStreamedMoves) {
     Bottle reply = network::rpc(*rpc, Bottle::from_text("[get] [vmo] 1"));
     return reply.size() >= 3 && reply[2].to_text() == "7.5";
   }));
+  // The group form a YARP proxy sends, on the command port and by RPC.
+  ASSERT_TRUE(out.write(Bottle::from_text("([vmog] 2 (0 1)) (2.5 -1.0)")));
+  EXPECT_TRUE(eventually([&] {
+    Bottle reply = network::rpc(*rpc, Bottle::from_text("[get] [vmos]"));
+    return reply.size() >= 3 && reply[2].to_text() == "(2.5 -1.0)";
+  }));
+  EXPECT_EQ(network::rpc(*rpc, Bottle::from_text("[set] [posg] 1 (1) (20.0)")).to_text(), "[ok]");
+  EXPECT_EQ(network::rpc(*rpc, Bottle::from_text("[get] [pos] 1")).size(), 7u);
+  EXPECT_EQ(network::rpc(*rpc, Bottle::from_text("[get] [pos] 1"))[2].to_text(), "20.0");
+  EXPECT_EQ(network::rpc(*rpc, Bottle::from_text("[set] [posg] 1 (5) (20.0)")).to_text(), "[fail]");
   out.close();
 }
 

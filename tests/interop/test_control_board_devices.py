@@ -1,0 +1,102 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Control boards across implementations, device to device: our remote_controlboard (through the
+paper's section 3.3 program) driving YARP's controlboardwrapper2 over fakeMotionControl, and
+YARP's remote_controlboard (in yarpdev, re-served as a proxy) driving our `robogene dev`."""
+import os
+import re
+
+import pytest
+
+import interop_net as net_
+from interop_peer import robogene_bin
+
+pytestmark = pytest.mark.timeout(120)
+
+
+def responses(proc, count, timeout=15):
+    proc.wait_until(f"{count} responses", lambda: sum(l.startswith("Response: ") for l in proc.stdout) >= count,
+                    timeout)
+    return [l[len("Response: "):] for l in proc.stdout if l.startswith("Response: ")]
+
+
+def value_of(reply: str) -> str:
+    """The value of `[is] [what] <value> [tsta] n t [ok]`."""
+    m = re.fullmatch(r"\[is\] \S+ (.+) \[tsta\] \d+ \S+ \[ok\]", reply)
+    assert m, reply
+    return m.group(1)
+
+
+def paper_program() -> str:
+    return os.path.join(os.path.dirname(robogene_bin()), "paper_section_3_3")
+
+
+def start_robogene_dev(procs, net, *args):
+    dev = procs.start("robogene dev", [robogene_bin(), "dev", *args], net.env)
+    dev.wait_output(r"serving on ", 15)
+    return dev
+
+
+def test_our_remote_controlboard_drives_yarps_control_board(yarpserver, yarp, ours, procs, net):
+    yarp.fake_motors("/interop/motors", joints=4)
+    program = procs.start("paper_section_3_3", [
+        paper_program(), "--device", "remote_controlboard", "--remote", "/interop/motors",
+        "--local", "/interop/paper", "--seconds", "2"], net.env)
+    program.wait_output(r"^t=0\.00 s", 15)
+    # While it runs, its encoder stream comes from YARP's stateExt:o over udp, as YARP's client does.
+    listed = yarp.cmd("admin", "rpc", "/interop/motors/stateExt:o", stdin="[list] [out] /interop/paper/stateExt:i\n")
+    assert b"(carrier udp)" in listed.stdout, listed
+    program.wait_until("exit", lambda: not program.running(), 20)
+    assert "(exited with 0," in program.describe(), program.describe()
+    last = program.stdout[-1]
+    # fakeMotionControl jumps to a position target: joint 0 reads 40 at once.
+    assert re.fullmatch(r"t=\S+ s  joint 0:  40\.000 deg  joint 1: +\S+ deg", last), program.describe()
+
+    # Every call reached the YARP device: read back through YARP's own rpc.
+    rpc = yarp.rpc("/interop/motors/rpc:i")
+    for request in ("[get] [acc] 0", "[get] [vel] 0", "[get] [pos] 0", "[get] [acc] 1", "[get] [vmo] 1"):
+        rpc.send(request)
+    acc0, vel0, pos0, acc1, vmo1 = (value_of(r) for r in responses(rpc, 5))
+    assert (acc0, vel0, pos0, acc1) == ("100.0", "5.0", "40.0", "100.0")
+    assert vmo1 == "5.0"  # velocityMove(1, 5) travelled on /interop/paper/command:o over udp
+
+
+def test_yarps_remote_controlboard_drives_robogene_dev(yarpserver, yarp, ours, procs, net):
+    start_robogene_dev(procs, net, "--device", "test_motor", "--axes", "4", "--name", "/interop/motors")
+    # YARP's yarpdev opens its remote_controlboard (checks [prot], asks [get] [axes], connects our
+    # stateExt:o to its stateExt:i over udp) and serves it again as /interop/proxy.
+    proxy = yarp.dev("--device", "remote_controlboard", "--remote", "/interop/motors", "--local", "/interop/client",
+                     "--name", "/interop/proxy")
+    proxy.wait_output(r"Port /interop/proxy/rpc:i active at ", 30)
+    net_.wait_registered(net.ns_port, "/interop/proxy/rpc:i", 15)
+
+    theirs = yarp.rpc("/interop/proxy/rpc:i")
+    theirs.send("[get] [axes]")
+    # YARP's wrapper turns the all-joints call into a group one: ([vmog] 4 (0 1 2 3)) (...) on command:o.
+    theirs.send("[set] [vmos] (0.0 5.0 0.0 0.0)")
+    theirs.send("[set] [vel] 0 50.0")
+    theirs.send("[set] [pos] 0 30.0")
+    axes, vmos, set_vel, set_pos = responses(theirs, 4)
+    assert value_of(axes) == "4"
+    assert (vmos, set_vel, set_pos) == ("[ok]", "[ok]", "[ok]")
+
+    mine = ours.rpc("/interop/motors/rpc:i")
+    mine.send("[get] [pos] 0")
+    mine.send("[get] [vel] 0")
+    assert [value_of(r) for r in responses(mine, 2)] == ["30.0", "50.0"]
+    # The all-joints velocity move went through YARP's command:o to our command:i.
+    mine.send("[get] [vmo] 1")
+    assert value_of(responses(mine, 3)[2]) == "5.0"
+
+    # YARP's client reads the encoders from our stateExt:o: they follow test_motor's motion.
+    sent = [4]
+
+    def encoders():
+        theirs.send("[get] [encs]")
+        sent[0] += 1
+        return [float(x) for x in value_of(responses(theirs, sent[0])[-1]).strip("()").split()]
+
+    theirs.wait_until("both joints moving", lambda: min(encoders()[:2]) > 0.0, 10)
+    theirs.wait_until("joint 0 at its target", lambda: abs(encoders()[0] - 30.0) < 1e-6, 10)
+    last = encoders()
+    assert len(last) == 4 and last[1] > 0.0 and last[2] == last[3] == 0.0, last
