@@ -15,7 +15,7 @@ import subprocess
 import sys
 
 QUICK_ARGS = {"bench_rpc": ["--n=5000"], "bench_stream": ["--frames=300"], "bench_fanout": ["--n=2000"],
-              "bench_python_rpc": ["--n=5000", "--rounds=2"]}
+              "bench_python_rpc": ["--n=5000", "--rounds=2"], "bench_shmem": ["--frames=300"]}
 
 
 def main() -> int:
