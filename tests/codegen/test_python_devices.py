@@ -247,7 +247,7 @@ def test_python_and_cpp_test_motor_share_one_motion_model(tmp_path):
     from pathlib import Path
     from robogene.dev.drivers.axis_motion import AxisMotion
 
-    drivers = Path(__file__).resolve().parents[2] / "runtime" / "src" / "dev" / "drivers"
+    drivers = Path(__file__).resolve().parents[2] / "drivers" / "fake" / "test_motor"
     (tmp_path / "main.cpp").write_text(AXIS_MAIN)
     exe = tmp_path / "axis"
     cc = subprocess.run(["g++", "-std=c++17", "-O2", "-ffp-contract=off", "-I", str(drivers),
