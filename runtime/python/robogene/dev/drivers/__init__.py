@@ -5,9 +5,17 @@ from .fake_grabber import FakeGrabber
 from .test_motor import TestMotor
 
 
+def _remote_controlboard():
+    # Imported when first created: it needs the compiled core, the simulated drivers do not.
+    from ..network import RemoteControlboard
+    return RemoteControlboard()
+
+
 def add_builtin_drivers(factory) -> None:
     factory.add("test_motor", "simulated control board: position and velocity moves, encoders", TestMotor)
     factory.add("fake_grabber", "simulated camera: a moving RGB test pattern", FakeGrabber)
+    factory.add("remote_controlboard", "a control board served elsewhere (remote, local, server)",
+                _remote_controlboard)
 
 
 __all__ = ["FakeGrabber", "TestMotor", "add_builtin_drivers"]

@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """fake_grabber in Python: the same simulated camera and test pattern as the C++ driver (see
-runtime/src/dev/drivers/fake_grabber.hpp for the pattern and the configuration keys)."""
+drivers/fake/fake_grabber/fake_grabber.hpp for the pattern and the configuration keys)."""
 from __future__ import annotations
 
 import math

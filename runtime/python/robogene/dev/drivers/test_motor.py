@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """test_motor in Python: the same simulated control board as the C++ driver (see
-runtime/src/dev/drivers/test_motor.hpp for the behaviour and the configuration keys)."""
+drivers/fake/test_motor/test_motor.hpp for the behaviour and the configuration keys)."""
 from __future__ import annotations
 
 import math

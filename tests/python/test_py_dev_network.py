@@ -1,0 +1,78 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Devices across languages on real ports: the paper's section 3.3 in Python through a C++
+`robogene dev` server, and a test_motor written in Python served by robogene.dev.network and
+driven by the C++ section 3.3 program (remote_controlboard)."""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import time
+
+import pytest
+
+from robogene import Bottle, Network, RpcClient
+from robogene.dev import DeviceDriver, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
+from robogene.dev.network import ControlboardNws
+
+pytestmark = pytest.mark.timeout(60)
+
+
+def section_3_3(device: PolyDriver):
+    """The paper's section 3.3, in Python; returns the encoders 0.5 s later and the time taken."""
+    ipos = device.view(IPositionControl)
+    ivel = device.view(IVelocityControl)
+    start = time.monotonic()
+    ipos.setRefAcceleration(0, 100)
+    ipos.setRefSpeed(0, 5)
+    ipos.positionMove(0, 40)
+    ivel.setRefAcceleration(1, 100)
+    ivel.velocityMove(1, 5)
+    time.sleep(0.5)
+    encoders = device.view(IEncoders).getEncoders()
+    return encoders, time.monotonic() - start
+
+
+def test_python_section_3_3_through_a_cpp_server(name_server, procs, robogene_bin, yarp_env):
+    dev = procs.start("robogene dev", [robogene_bin, "dev", "--device", "test_motor", "--axes", "2",
+                                       "--name", "/motors"], yarp_env)
+    dev.wait_for_line(r"serving on ", stream="err")
+    with PolyDriver(Property.from_dict({"device": "remote_controlboard", "remote": "/motors",
+                                        "local": "/pyclient", "server": name_server.address})) as device:
+        assert device.is_valid(), device.last_error
+        encoders, elapsed = section_3_3(device)
+        assert len(encoders) == 2
+        for value in encoders:
+            assert 5 * (0.5 - 0.1) < value <= 5 * elapsed + 1e-9, encoders
+        assert device.view(IPositionControl).checkMotionDone(0) is False
+
+
+def test_remote_controlboard_in_python_reports_an_absent_server(name_server):
+    device = PolyDriver()
+    assert not device.open(Property.from_dict({"device": "remote_controlboard", "remote": "/nobody",
+                                               "local": "/pyclient", "server": name_server.address}))
+    assert "/nobody/rpc:i" in device.last_error
+
+
+def test_a_python_device_served_to_the_cpp_section_3_3_program(name_server, robogene_bin, yarp_env):
+    network = Network(name_server.address)
+    with PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2})) as motor:
+        with ControlboardNws(motor.view(DeviceDriver), "/pymotors", network=network) as server:
+            assert server.port_names() == ["/pymotors/rpc:i", "/pymotors/command:i", "/pymotors/state:o",
+                                           "/pymotors/stateExt:o"]
+            program = os.path.join(os.path.dirname(robogene_bin), "paper_section_3_3")
+            run = subprocess.run([program, "--device", "remote_controlboard", "--remote", "/pymotors",
+                                  "--local", "/paper", "--seconds", "1"], capture_output=True, text=True,
+                                 env=yarp_env, timeout=30)
+            assert run.returncode == 0, run.stderr
+            m = re.fullmatch(r"t=(\S+) s  joint 0: +(\S+) deg  joint 1: +(\S+) deg", run.stdout.splitlines()[-1])
+            assert m, run.stdout
+            t, j0, j1 = (float(g) for g in m.groups())
+            assert 5 * (t - 0.2) < j0 <= 5 * t + 1e-6, run.stdout
+            assert 5 * (t - 0.2) < j1 <= 5 * t + 1e-6, run.stdout
+            # The velocity move came on the command port (udp), the rest by RPC: the Python device has them.
+            with RpcClient(server="/pymotors/rpc:i", network=network) as client:
+                reply = client.call(Bottle.from_text("[get] [vmo] 1"))
+                assert reply.to_text().startswith("[is] [vmo] 5.0 [tsta] ")
+    assert network.query("/pymotors/rpc:i") is None
