@@ -161,7 +161,9 @@ TEST(ControlboardNws, StatePortsStreamEncodersWithEnvelopesAtThePeriod) {
   const auto& first = states.front().first;
   const auto& tenth = states[10].first;
   EXPECT_EQ(tenth.sequence, first.sequence + 10);
-  EXPECT_NEAR(tenth.time - first.time, 0.5, 0.15);
+  // The schedule does not drift: ten periods take 0.5 s, more only when a loaded machine skips ticks.
+  EXPECT_GE(tenth.time - first.time, 0.45);
+  EXPECT_LE(tenth.time - first.time, 0.8);
   EXPECT_EQ(states.front().second.to_text(), "0.0 0.0");
   // jointData: 22 items, positions first and flagged [ok].
   const Bottle& ext = exts.front().second;
