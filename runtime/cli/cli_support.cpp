@@ -60,6 +60,27 @@ long parse_number(const std::string& text, const std::string& what, long lo, lon
   return v;
 }
 
+std::size_t parse_bytes(const std::string& text, const std::string& what) {
+  std::string digits = text;
+  unsigned long long unit = 1;
+  if (!digits.empty()) {
+    switch (digits.back()) {
+      case 'k': case 'K': unit = 1ull << 10; break;
+      case 'M': unit = 1ull << 20; break;
+      case 'G': unit = 1ull << 30; break;
+      default: break;
+    }
+    if (unit != 1) digits.pop_back();
+  }
+  char* end = nullptr;
+  errno = 0;
+  unsigned long long v = digits.empty() || digits[0] == '-' ? 0 : std::strtoull(digits.c_str(), &end, 10);
+  if (digits.empty() || !end || *end != '\0' || errno != 0 || v == 0 || v > (2ull << 30) / unit) {
+    throw UsageError(what + " must be a size in bytes from 1 to 2G (suffixes k, M, G), got \"" + text + "\"");
+  }
+  return static_cast<std::size_t>(v * unit);
+}
+
 double parse_seconds(const std::string& text, const std::string& what) {
   char* end = nullptr;
   double v = std::strtod(text.c_str(), &end);

@@ -43,6 +43,9 @@ net::Endpoint parse_host_port(const std::string& text, const std::string& what);
 // A whole number in [lo, hi]; UsageError naming `what` otherwise.
 long parse_number(const std::string& text, const std::string& what, long lo, long hi);
 double parse_seconds(const std::string& text, const std::string& what);
+// A size in bytes, optionally with a k, M or G suffix (powers of 1024), at least 1 and at most
+// 2 GiB; UsageError naming `what` otherwise.
+std::size_t parse_bytes(const std::string& text, const std::string& what);
 
 // Where the name server is: --server if given, else yarp.conf, else 127.0.0.1:10000.
 net::Endpoint name_server_address(Args& args);

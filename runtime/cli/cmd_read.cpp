@@ -17,13 +17,15 @@ namespace robogene::cli {
 int cmd_read(Args& args) {
   net::Endpoint server = name_server_address(args);
   bool show_envelope = args.flag("--envelope");
+  PortOptions options;
+  if (auto m = args.option("--max-message")) options.max_message_size = parse_bytes(*m, "--max-message");
   auto w = args.positional();
   if (w.empty() || w.size() > 2) throw UsageError("expected /port [/source]");
   std::string name = checked_port_name(w[0], "the port");
   std::string source = w.size() == 2 ? checked_port_name(w[1], "the source") : "";
 
   std::mutex print_mutex;
-  Port port;
+  Port port(options);
   port.set_reader([&](const Bottle& data, const MessageInfo& info, Bottle*) {
     std::string line = data.to_text();
     std::lock_guard<std::mutex> lock(print_mutex);

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // `robogene server`: the name server /root, with registrations kept in SQLite.
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -29,6 +30,11 @@ int cmd_server(Args& args) {
   double sweep_seconds = 60;
   if (auto s = args.option("--sweep")) sweep_seconds = parse_seconds(*s, "--sweep");
   bool write_conf = !args.flag("--read");
+  name::NameServerLimits limits;
+  if (auto m = args.option("--max-message")) {
+    limits.max_message = parse_bytes(*m, "--max-message");
+    limits.max_line = std::min(limits.max_line, limits.max_message);
+  }
   if (!args.positional().empty()) throw UsageError("unexpected argument \"" + args.positional()[0] + "\"");
 
   if (db_path != ":memory:") {
@@ -41,7 +47,7 @@ int cmd_server(Args& args) {
   config.port = listener.local().port;
   name::TcpLivenessProbe probe;
   name::NameService service(registry, config, &probe);
-  name::NameServer server(service, std::move(listener));
+  name::NameServer server(service, std::move(listener), limits);
   if (write_conf) write_yarp_conf(net::Endpoint{ip, config.port});
 
   std::mutex mutex;

@@ -23,11 +23,11 @@ struct Command {
 };
 
 const Command kCommands[] = {
-    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S]",
+    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S] [--max-message BYTES]",
      "run the name server /root (default 127.0.0.1:10000); registrations persist in FILE", robogene::cli::cmd_server},
     {"name", "robogene name query|list|register|unregister|set|get|check|route|gc ARGS... [--server HOST:PORT]",
      "ask the name server, printing its replies as `yarp name` does", robogene::cli::cmd_name},
-    {"read", "robogene read /port [/source] [--envelope] [--server HOST:PORT]",
+    {"read", "robogene read /port [/source] [--envelope] [--max-message BYTES] [--server HOST:PORT]",
      "open an input port and print every bottle received, one per line (stop with Ctrl-C)",
      robogene::cli::cmd_read},
     {"write", "robogene write /port [/destination ...] [--server HOST:PORT]",

@@ -67,6 +67,17 @@ def test_server_replays_the_captured_yarp_session_byte_for_byte():
             assert got == want, text
 
 
+def test_server_answers_help_with_a_usage_line_per_request():
+    _, server = board()
+    for request in ("help", "[help]"):
+        reply = server.respond(Bottle.from_text(request))
+        assert reply[0].to_text() == "[many]"
+        lines = [reply[i].as_string() for i in range(1, len(reply))]
+        assert lines[0] == "[get] [axes]  # The number of axes the board controls."
+        assert "[set] [pos] $j $ref  # Start moving one axis to an absolute position. (ref: deg)" in lines
+    assert server.respond(Bottle.from_text("helper")).to_text() == "[nak]"
+
+
 def test_server_refuses_malformed_requests():
     _, server = board()
     ask = lambda text: server.respond(Bottle.from_text(text)).to_text()  # noqa: E731

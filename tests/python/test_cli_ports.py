@@ -56,6 +56,17 @@ def test_multiline_bottles_and_bad_lines(name_server, procs, robogene_bin, yarp_
     assert reader.out == ['(a b) "two\\nlines"', "1 2 3"]
 
 
+def test_read_refuses_messages_over_its_size_limit(name_server, procs, robogene_bin, yarp_env, cli):
+    reader = start_read(procs, robogene_bin, yarp_env, "/r", "--max-message", "1k")
+    cli("write", "/big", "/r", input='"' + "x" * 2000 + '"\n')  # its connection is closed under it
+    reader.wait_for_line(r"more than the maximum message size of 1024", stream="err")
+    ok(cli("write", "/small", "/r", input="still here\n"))
+    reader.wait_for_line("^still here$")
+    assert reader.out == ["still here"]
+    bad = cli("read", "/r2", "--max-message", "lots")
+    assert bad.returncode == 2 and "--max-message must be a size in bytes" in bad.stderr
+
+
 def test_read_stops_cleanly_and_unregisters(name_server, procs, robogene_bin, yarp_env, cli):
     reader = start_read(procs, robogene_bin, yarp_env, "/quiet")
     assert "/quiet" in ok(cli("name", "query", "/quiet"))

@@ -59,6 +59,21 @@ def test_paper_section_4_4_telnet_session(name_server, procs, robogene_bin, yarp
         buf = bytearray()
         s.sendall(b"CONNECT foo\r\n")
         assert read_line(s, buf) == b"Welcome foo\r\n"
+        # The paper's session, line by line: the port's help, its description, the device's help.
+        s.sendall(b"help\r\n")
+        port_help = [read_line(s, buf)]
+        while not port_help[-1].startswith(b"?"):
+            port_help.append(read_line(s, buf))
+        assert any(line.startswith(b"d ") for line in port_help), port_help
+        s.sendall(b"*\r\n")
+        assert read_line(s, buf) == f"This is /motors at tcp://{at[0]}:{at[1]}/\r\n".encode()
+        assert read_line(s, buf) == b"There are no outgoing connections\r\n"
+        assert read_line(s, buf) == b"There is an input connection from foo to /motors using text\r\n"
+        s.sendall(b"d\r\nhelp\r\n")
+        device_help = read_line(s, buf).decode()
+        assert device_help.startswith("[many] "), device_help
+        assert '"[get] [axes]  # The number of axes the board controls."' in device_help
+        assert '"[set] [pos] $j $ref  # Start moving one axis to an absolute position. (ref: deg)"' in device_help
         s.sendall(b"d\r\n[get] [axes]\r\n")
         assert AXES_REPLY.match(read_line(s, buf))
         s.sendall(b"d\r\n[set] [pos] 0 100.0\r\n")

@@ -98,3 +98,23 @@ def identifier(chars: str) -> str:
 
 def described(m: Method) -> str:
     return m.doc.strip().replace("\n", " ")
+
+
+def usage(m: Method) -> str:
+    """One line of a server's answer to `help`: the request with its arguments, what it does,
+    and the arguments' units ("[set] [pos] $j $ref  # Start moving ... (ref: deg)")."""
+    request = " ".join([vocab_text(m.wire)] + [f"${param_name(a)}" for a in m.args])
+    units = ", ".join(f"{param_name(a)}: {a.unit}" for a in m.args if a.unit)
+    return f"{request}  # {described(m)}" + (f" ({units})" if units else "")
+
+
+def help_lines(service) -> list[str]:
+    """A server's answer to `help`: one usage line per request path, in the IDL's order (a path
+    shared by several interfaces is listed once, as the first one describes it)."""
+    seen, lines = set(), []
+    for iface in service.interfaces:
+        for m in iface.methods:
+            if m.wire is not None and m.wire not in seen:
+                seen.add(m.wire)
+                lines.append(usage(m))
+    return lines

@@ -82,6 +82,7 @@ class HttpStream final : public OutboundConnection {
   std::string peer_text() const override { return peer_; }
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
   void write_message(const OutboundMessage& m) override {
     if (!m.bottle) return;
     std::string line = html_escape(m.bottle->to_text()) + "\r\n";

@@ -24,6 +24,7 @@ class HttpInbound final : public InboundConnection {
   std::string peer_text() const override { return peer_; }
   bool is_text() const override { return true; }
   void interrupt() noexcept override;
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
 
   bool read(InboundMessage& m) override;
   void reply(const Bottle& b) override;

@@ -21,6 +21,7 @@ class TextInbound final : public InboundConnection {
   std::string peer_text() const override { return link_->stream.peer_text(); }
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
 
   bool read(InboundMessage& m) override;
   void reply(const Bottle& b) override;
@@ -52,6 +53,7 @@ class TextOutbound final : public OutboundConnection {
   std::string peer_text() const override { return link_->stream.peer_text(); }
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
 
   void write_message(const OutboundMessage& m) override;
   void await_completion(Bottle* reply) override;

@@ -36,6 +36,7 @@ class UdpOutbound final : public OutboundConnection {
   std::string peer_text() const override { return to_.to_string(); }
   bool is_text() const override { return false; }
   void interrupt() noexcept override { sock_.interrupt(); }
+  int socket_fd() const noexcept override { return sock_.fd(); }
 
   void write_message(const OutboundMessage& m) override {
     framer_.send(m, [&](const iovec* parts, std::size_t n) { sock_.send_to(to_, parts, n); });

@@ -25,6 +25,7 @@ class NameSerInbound final : public carrier::InboundConnection {
   std::string peer_text() const override { return link_->stream.peer_text(); }
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
 
   bool read(carrier::InboundMessage& m) override {
     std::string line;
@@ -78,6 +79,7 @@ class NameSerOutbound final : public carrier::OutboundConnection {
   std::string peer_text() const override { return link_->stream.peer_text(); }
   bool is_text() const override { return true; }
   void interrupt() noexcept override { link_->stream.shutdown(); }
+  int socket_fd() const noexcept override { return link_->stream.fd(); }
 
   void write_message(const carrier::OutboundMessage& m) override {
     if (used_) throw Error("name_ser carries one request per connection (to " + peer_text() + ")");

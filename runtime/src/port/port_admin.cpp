@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // Administrative messages (reference section 3.4), as `yarp connect` / `yarp disconnect` and
-// remote_controlboard send them: [help] [ver] [add] [del] [list] [in|out].
+// remote_controlboard send them: [help] [ver] [add] [del] [list] [in|out]; [prop] is in
+// port_properties.cpp.
 #include <string>
 
 #include "port_core.hpp"
@@ -48,6 +49,12 @@ Bottle Port::Core::admin(const Bottle& cmd) {
              "[list] [out]            # list output connections",
              "[list] [in]  $portname  # details of one input",
              "[list] [out] $portname  # details of one output",
+             "[prop] [get]            # every user-defined port property",
+             "[prop] [get] $prop      # one user-defined port property",
+             "[prop] [set] $prop $val # set a user-defined port property",
+             "[prop] [get] $portname  # scheduling and QoS of the connection to/from $portname",
+             "[prop] [set] $portname (qos ((tos $n))) | (sched ((priority $p) (policy $q)))",
+             "[prop] [get] $thisport  # this port's thread, process and platform",
          }) {
       r.add(Value(std::string(line)));
     }
@@ -91,6 +98,7 @@ Bottle Port::Core::admin(const Bottle& cmd) {
     }
     return r;
   }
+  if (op == "prop") return admin_prop(cmd);
   return fail("send [help] for list of valid commands");
 }
 

@@ -33,6 +33,7 @@ struct InputUnit {
   std::string carrier;
   carrier::InboundConnection* conn = nullptr;  // valid while the thread owns it (under Core::mutex)
   std::thread thread;
+  std::atomic<int> tid{-1};  // the thread's kernel id, for [prop] [get] / [set] (sched ...)
   bool done = false;
 };
 
@@ -48,12 +49,14 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
 
   net::TcpListener listener;
   std::thread acceptor;
+  std::atomic<int> acceptor_tid{-1};
   std::atomic<bool> open{false};
   std::atomic<bool> closing{false};
 
-  mutable std::mutex mutex;  // outputs, inputs, resolver
+  mutable std::mutex mutex;  // outputs, inputs, resolver, properties
   std::vector<std::shared_ptr<OutputUnit>> outputs;
   std::list<std::shared_ptr<InputUnit>> inputs;
+  Bottle properties;  // user-defined, as (key value) lists: [prop] [set] key value
 
   std::mutex write_mutex;  // one write at a time; guards envelope
   std::string envelope;
@@ -92,6 +95,7 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
   bool remove_input_report(const std::string& from, std::string& report);
   std::string describe() const;
   Bottle admin(const Bottle& cmd);
+  Bottle admin_prop(const Bottle& cmd);  // [prop] [get] / [prop] [set] (port_properties.cpp)
   void add_unit(std::shared_ptr<OutputUnit> unit);
   void drop_output(const std::shared_ptr<OutputUnit>& unit, const std::string& why);
   std::optional<Contact> resolve(const std::string& port_name);

@@ -3,6 +3,8 @@
 //
 // Input side of a Port: accepting connections, one thread per connection, the message loop
 // with data, admin, reverse, quit and the text-mode commands of reference section 3.5.
+#include <unistd.h>
+
 #include <string>
 #include <system_error>
 
@@ -38,6 +40,7 @@ bool rooted(const std::string& name) { return !name.empty() && name[0] == '/'; }
 }  // namespace
 
 void Port::Core::accept_loop() {
+  acceptor_tid = static_cast<int>(gettid());
   while (!closing) {
     auto s = listener.accept();
     if (!s) {
@@ -85,6 +88,7 @@ void Port::Core::reap_finished_inputs() {
 }
 
 void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
+  unit->tid = static_cast<int>(gettid());
   carrier::AcceptContext ctx;
   ctx.local_name = name;
   ctx.max_message_size = options.max_message_size;

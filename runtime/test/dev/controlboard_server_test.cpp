@@ -149,6 +149,24 @@ TEST(ControlboardServer, ReferencePairsInTextForm) {
   EXPECT_EQ(board.ask("get done 0"), "[fail]");
 }
 
+TEST(ControlboardServer, HelpListsEveryRequestWithItsArgumentsAndUnits) {
+  // The paper's section 4.4 types `help` after `d`: the device answers with its commands.
+  Board board;
+  for (const char* request : {"help", "[help]"}) {
+    const Bottle reply = board.server->respond(Bottle::from_text(request));
+    ASSERT_GT(reply.size(), 40u) << request;
+    EXPECT_EQ(reply[0].to_text(), "[many]");
+    EXPECT_EQ(reply[1].as_string(), "[get] [axes]  # The number of axes the board controls.");
+    bool pos = false;
+    for (const Value& line : reply) {
+      pos = pos || (line.is_string() &&
+                    line.as_string() == "[set] [pos] $j $ref  # Start moving one axis to an absolute position. (ref: deg)");
+    }
+    EXPECT_TRUE(pos) << reply.to_text();
+  }
+  EXPECT_EQ(board.ask("helper"), "[nak]");
+}
+
 TEST(ControlboardServer, RequestsDriveTheDeviceAndEncodersFollow) {
   Board board;
   ISimulationClock* clock = nullptr;

@@ -4,10 +4,12 @@
 // Ports on 127.0.0.1 with ephemeral numbers, found through a table instead of a name server.
 #pragma once
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <thread>
 
 #include "robogene/port.hpp"
 
@@ -37,6 +39,16 @@ inline void open_local(Port& p, const std::string& name, PortTable& table) {
   p.open_at(name, {"127.0.0.1", 0});
   p.set_resolver(table.resolver());
   table.add(p);
+}
+
+// Polls `condition` every 10 ms for up to 5 s; whether it became true.
+template <typename Condition>
+bool wait_until(Condition condition) {
+  for (int i = 0; i < 500; ++i) {
+    if (condition()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return condition();
 }
 
 }  // namespace robogene::test

@@ -7,8 +7,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...idl.model import Field, Idl, Interface, Method, Service
-from ..common import (all_sources, environment, identifier, line_comment_header, param_name,
-                      vocab_text)
+import json
+
+from ..common import (all_sources, environment, help_lines, identifier, line_comment_header,
+                      param_name, vocab_text)
 from ..cpp_interfaces import INCLUDE_DIR, cpp_type, header_name, in_param, out_param, value_type
 
 
@@ -43,6 +45,12 @@ def routes(service: Service) -> list[Route]:
             found[m.wire].candidates.append((iface, m))
     # Longest paths first, then by text, so that a longer path is never shadowed.
     return sorted(found.values(), key=lambda r: (-len(r.wire), r.wire))
+
+
+def usage_literals(service: Service) -> list[str]:
+    """The service's answer to `help`, one line per request path in the IDL's order, as C++
+    string literals (JSON's escapes are C++'s for ASCII)."""
+    return [json.dumps(line) for line in help_lines(service)]
 
 
 def member(iface: Interface) -> str:
@@ -103,7 +111,7 @@ def client_methods(service: Service) -> list:
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+    helpers = dict(usage_literals=usage_literals, command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
     out = {}

@@ -4,8 +4,8 @@
 from __future__ import annotations
 
 from ...idl.model import Field, Idl, Method, TypeRef
-from ..common import (all_sources, described, environment, identifier, line_comment_header,
-                      param_name, vocab_int, wire_vocabs)
+from ..common import (all_sources, described, environment, help_lines, identifier,
+                      line_comment_header, param_name, vocab_int, wire_vocabs)
 
 PACKAGE_DIR = "runtime/python/robogene/dev/generated"
 
@@ -69,7 +69,8 @@ def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
     helpers = dict(client_methods=client_methods, type_names=type_names, class_name=class_name,
                    py_type=py_type, params=params, returns=returns, described=described,
-                   vocab_int=vocab_int, identifier=identifier, param_name=param_name, hint=hint)
+                   vocab_int=vocab_int, identifier=identifier, param_name=param_name, hint=hint,
+                   help_lines=help_lines)
     header = line_comment_header("#", "BSD-3-Clause", all_sources(idl))
     out = {}
     for name in ("__init__.py", "types.py", "interfaces.py", "wire.py", "clients.py"):

@@ -37,6 +37,9 @@ class Connection {
   virtual bool is_text() const = 0;
   // Wakes a thread blocked on this connection; later calls fail. Safe from any thread.
   virtual void interrupt() noexcept = 0;
+  // The socket this end's own packets (data, replies, acks) leave by, for per-connection QoS
+  // (IP_TOS, set by the admin message [prop] [set] /peer (qos ...)); -1 when it sends none.
+  virtual int socket_fd() const noexcept { return -1; }
 };
 
 class OutboundConnection;

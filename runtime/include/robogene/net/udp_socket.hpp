@@ -20,6 +20,7 @@ class UdpSocket {
   static UdpSocket bind(const Endpoint& at);
 
   bool is_open() const noexcept { return fd_.valid(); }
+  int fd() const noexcept { return fd_.get(); }
   const Endpoint& local() const noexcept { return local_; }
 
   void send_to(const Endpoint& to, const void* data, std::size_t size);

@@ -15,7 +15,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 from .. import Bottle, Error, Value, vocab
 from .generated import interfaces as _interfaces
 from .generated import types as _types
-from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STREAMS, STRUCTS
+from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STREAMS, STRUCTS, USAGE
 from .image import ImageRgb
 
 _INT32 = (-(2 ** 31), 2 ** 31 - 1)
@@ -151,6 +151,12 @@ class RpcServer:
         return len(request) >= len(path) and all(vocab_of(request[i]) == vocab(w) for i, w in enumerate(path))
 
     def respond(self, request: Bottle) -> Bottle:
+        if len(request) >= 1 and ((request[0].is_vocab() and request[0].as_vocab() == vocab("help")) or
+                                  (request[0].is_string() and request[0].as_string() == "help")):
+            reply = _single("many")
+            for line in USAGE[self.service]:
+                reply.add(Value.string(line))
+            return reply
         if len(request) < 2:
             return _single("nak")
         if self._protocol and len(request) == len(self._protocol[0]) and self._matches(request, self._protocol[0]):

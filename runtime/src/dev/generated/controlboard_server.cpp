@@ -1083,6 +1083,76 @@ const Route kRoutes[] = {
     {{vocab("set"), vocab("vmos")}, 2, false, &h_set_vmos},
 };
 
+// The answer to `help` ([many] and one string per line), as YARP's DeviceResponder gives it.
+const char* const kUsage[] = {
+    "[get] [axes]  # The number of axes the board controls.",
+    "[get] [enc] $j  # The measured position of one axis.",
+    "[get] [encs]  # The measured positions of all axes.",
+    "[get] [esp] $j  # The measured speed of one axis.",
+    "[get] [esps]  # The measured speeds of all axes.",
+    "[get] [eac] $j  # The measured acceleration of one axis.",
+    "[get] [eacs]  # The measured accelerations of all axes.",
+    "[set] [ere] $j  # Make the current position of one axis read as zero.",
+    "[set] [eres]  # Make the current positions of all axes read as zero.",
+    "[set] [enc] $j $val  # Make the current position of one axis read as the given value. (val: deg)",
+    "[set] [encs] $vals  # Make the current positions of all axes read as the given values. (vals: deg)",
+    "[set] [pos] $j $ref  # Start moving one axis to an absolute position. (ref: deg)",
+    "[set] [poss] $refs  # Start moving every axis to an absolute position. (refs: deg)",
+    "[set] [rel] $j $delta  # Start moving one axis by an offset from its current target. (delta: deg)",
+    "[set] [rels] $deltas  # Start moving every axis by an offset from its current target. (deltas: deg)",
+    "[get] [don] $j  # Whether one axis has reached its target.",
+    "[get] [dons]  # Whether each axis has reached its target.",
+    "[set] [vel] $j $sp  # The speed at which later position moves of one axis travel. (sp: deg/s)",
+    "[set] [vels] $sps  # The speeds at which later position moves of each axis travel. (sps: deg/s)",
+    "[set] [acc] $j $acc  # The acceleration with which later moves of one axis speed up and slow down. (acc: deg/s^2)",
+    "[set] [accs] $accs  # The accelerations with which later moves of each axis speed up and slow down. (accs: deg/s^2)",
+    "[get] [vel] $j  # The reference speed of one axis.",
+    "[get] [vels]  # The reference speed of each axis.",
+    "[get] [acc] $j  # The reference acceleration of one axis.",
+    "[get] [accs]  # The reference acceleration of each axis.",
+    "[set] [sto] $j  # Decelerate one axis to rest at its reference acceleration.",
+    "[set] [stos]  # Decelerate every axis to rest at its reference acceleration.",
+    "[get] [pos] $j  # The position the last position move of one axis is heading for.",
+    "[get] [poss]  # The positions the last position moves are heading for.",
+    "[set] [vmo] $j $sp  # Start moving one axis at a velocity. (sp: deg/s)",
+    "[set] [vmos] $sps  # Start moving every axis at a velocity. (sps: deg/s)",
+    "[get] [vmo] $j  # The velocity the last velocity move of one axis asked for.",
+    "[get] [vmos]  # The velocities the last velocity moves asked for.",
+    "[get] [torq] [axes]  # The number of axes the board controls.",
+    "[get] [torq] [trq] $j  # The measured torque of one axis.",
+    "[get] [torq] [trqs]  # The measured torques of all axes.",
+    "[set] [torq] [ref] $j $t  # The torque one axis should exert. (t: Nm)",
+    "[set] [torq] [refs] $ts  # The torques all axes should exert. (ts: Nm)",
+    "[get] [torq] [ref] $j  # The torque reference of one axis (not the measurement).",
+    "[get] [torq] [refs]  # The torque references of all axes.",
+    "[get] [torq] [rng] $j  # The smallest and largest torque one axis can exert.",
+    "[get] [torq] [rngs]  # The smallest and largest torques each axis can exert.",
+    "[set] [pid] [pid] $pidtype $j $pid  # Replace the gains of one controller of one axis.",
+    "[set] [pid] [pids] $pidtype $pids  # Replace the gains of one controller of every axis.",
+    "[get] [pid] [pid] $pidtype $j  # The gains of one controller of one axis.",
+    "[get] [pid] [pids] $pidtype  # The gains of one controller of every axis.",
+    "[set] [pid] [ref] $pidtype $j $ref  # Drive one controller directly with a reference; this bypasses trajectory generation.",
+    "[set] [pid] [refs] $pidtype $refs  # Drive one controller of every axis directly with a reference.",
+    "[get] [pid] [ref] $pidtype $j  # The reference one controller is following.",
+    "[get] [pid] [refs] $pidtype  # The references one controller of every axis is following.",
+    "[set] [pid] [lim] $pidtype $j $limit  # The largest error one controller tolerates.",
+    "[set] [pid] [lims] $pidtype $limits  # The largest errors one controller of each axis tolerates.",
+    "[get] [pid] [lim] $pidtype $j  # The largest error one controller tolerates.",
+    "[get] [pid] [lims] $pidtype  # The largest errors one controller of each axis tolerates.",
+    "[get] [pid] [err] $pidtype $j  # The current error of one controller.",
+    "[get] [pid] [errs] $pidtype  # The current errors of one controller of every axis.",
+    "[get] [pid] [out] $pidtype $j  # The current output of one controller (for example a PWM value).",
+    "[get] [pid] [outs] $pidtype  # The current outputs of one controller of every axis.",
+    "[get] [icmd] [cmod] $j  # The control mode of one axis.",
+    "[get] [icmd] [cmds]  # The control mode of every axis.",
+    "[set] [icmd] [cmod] $j $mode  # Switch one axis to a control mode.",
+    "[set] [icmd] [cmds] $modes  # Switch every axis to a control mode.",
+};
+
+bool is_help(const Value& v) {
+  return (v.is_string() && v.as_string() == "help") || (v.is_vocab() && v.as_vocab() == vocab("help"));
+}
+
 bool matches(const Bottle& req, const vocab_t* path, std::size_t length) {
   if (req.size() < length) return false;
   for (std::size_t i = 0; i < length; ++i) {
@@ -1185,6 +1255,12 @@ bool ControlboardServer::command(const Bottle& message) {
 }
 
 Bottle ControlboardServer::respond(const Bottle& req) {
+  if (!req.empty() && is_help(req[0])) {
+    Bottle reply;
+    reply.add(Value::vocab(vocab("many")));
+    for (const char* line : kUsage) reply.add(Value::string(line));
+    return reply;
+  }
   if (req.size() < 2) return single("nak");
   {
     const vocab_t path[] = {vocab("get"), vocab("prot")};

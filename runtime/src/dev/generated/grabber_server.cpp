@@ -186,6 +186,23 @@ const Route kRoutes[] = {
     {{vocab("fgi"), vocab("get"), vocab("w")}, 3, true, &h_fgi_get_w},
 };
 
+// The answer to `help` ([many] and one string per line), as YARP's DeviceResponder gives it.
+const char* const kUsage[] = {
+    "[fgi] [get] [h]  # Rows of the images.",
+    "[fgi] [get] [w]  # Columns of the images.",
+    "[fgc] [has] [feat] $feature  # Whether the camera has a feature at all.",
+    "[fgc] [set] [feat] $feature $value  # Set a feature, as a fraction of its range. (value: fraction)",
+    "[fgc] [get] [feat] $feature  # The value of a feature, as a fraction of its range.",
+    "[fgc] [set] [actv] $feature $onoff  # Switch a feature on or off.",
+    "[fgc] [get] [actv] $feature  # Whether a feature is on.",
+    "[fgc] [set] [mode] $feature $mode  # Let the camera set a feature (auto) or leave it to the user (manual).",
+    "[fgc] [get] [mode] $feature  # Who sets a feature.",
+};
+
+bool is_help(const Value& v) {
+  return (v.is_string() && v.as_string() == "help") || (v.is_vocab() && v.as_vocab() == vocab("help"));
+}
+
 bool matches(const Bottle& req, const vocab_t* path, std::size_t length) {
   if (req.size() < length) return false;
   for (std::size_t i = 0; i < length; ++i) {
@@ -226,6 +243,12 @@ bool GrabberServer::publish_image(Bottle& out) {
 }
 
 Bottle GrabberServer::respond(const Bottle& req) {
+  if (!req.empty() && is_help(req[0])) {
+    Bottle reply;
+    reply.add(Value::vocab(vocab("many")));
+    for (const char* line : kUsage) reply.add(Value::string(line));
+    return reply;
+  }
   if (req.size() < 2) return single("nak");
   {
     const vocab_t path[] = {vocab("get"), vocab("rgif")};
