@@ -47,3 +47,37 @@ def test_malformed_bytes_name_the_offset(case):
         robogene.Bottle.from_bytes(bytes.fromhex(case["hex"]))
     assert err.value.position == case["offset"]
     assert case["message"] in str(err.value)
+
+
+# What real YARP 3.5 produced (see runtime/test/bottle/yarp_vectors_test.cpp, its C++ twin):
+# our parser gives YARP's bytes, our decoder YARP's rendering, re-encoding the same bytes.
+YARP = load("yarp3_bottles.json")
+YARP_OK = [c for c in YARP if not c["name"].startswith("malformed_")]
+YARP_MALFORMED = [c for c in YARP if c["name"].startswith("malformed_")]
+YARP_TYPED = load("yarp3_typed_values.json")
+
+
+@pytest.mark.parametrize("case", YARP_OK, ids=[c["name"] for c in YARP_OK])
+def test_yarp_produced_vectors(case):
+    assert robogene.Bottle.from_text(case["text"]).to_bytes().hex() == case["hex"]
+    decoded = robogene.Bottle.from_bytes(bytes.fromhex(case["hex"]))
+    assert decoded.to_text() == case["canonical_text"]
+    assert decoded.to_bytes().hex() == case["hex"]
+
+
+@pytest.mark.parametrize("case", YARP_MALFORMED, ids=[c["name"] for c in YARP_MALFORMED])
+def test_what_yarp_accepts_as_malformed_we_refuse_with_a_column(case):
+    with pytest.raises(robogene.ParseError) as err:
+        robogene.Bottle.from_text(case["text"])
+    assert "column" in str(err.value)
+
+
+@pytest.mark.parametrize("case", YARP_TYPED, ids=[c["name"] for c in YARP_TYPED])
+def test_yarp_typed_values(case):
+    decoded = robogene.Bottle.from_bytes(bytes.fromhex(case["hex"]))
+    assert decoded.to_text() == case["canonical_text"]
+    assert decoded.to_bytes().hex() == case["hex"]
+
+
+def test_yarp_vector_files_are_not_empty():
+    assert len(YARP_OK) >= 130 and len(YARP_MALFORMED) >= 5 and len(YARP_TYPED) >= 20
