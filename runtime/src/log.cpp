@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <utility>
 
 namespace robogene::log {
 
@@ -38,15 +39,33 @@ const char* tag(Level l) {
   }
 }
 
+std::mutex& write_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+Sink& sink() {
+  static Sink s;
+  return s;
+}
+
 }  // namespace
 
 Level level() noexcept { return static_cast<Level>(current().load()); }
 void set_level(Level l) noexcept { current().store(static_cast<int>(l)); }
 bool enabled(Level l) noexcept { return static_cast<int>(l) >= current().load(); }
 
+void set_sink(Sink s) {
+  std::lock_guard<std::mutex> lock(write_mutex());
+  sink() = std::move(s);
+}
+
 void write(Level l, std::string_view who, std::string_view text) {
-  static std::mutex mutex;
-  std::lock_guard<std::mutex> lock(mutex);
+  std::lock_guard<std::mutex> lock(write_mutex());
+  if (sink()) {
+    sink()(l, who, text);
+    return;
+  }
   std::fprintf(stderr, "[%s] %.*s: %.*s\n", tag(l), static_cast<int>(who.size()), who.data(),
                static_cast<int>(text.size()), text.data());
 }

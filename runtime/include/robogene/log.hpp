@@ -6,6 +6,7 @@
 // where relevant, the peer.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,11 @@ void set_level(Level l) noexcept;  // overrides the environment (tests)
 bool enabled(Level l) noexcept;
 // Writes one line if `l` is enabled. `who` is a port name or a component ("name-client").
 void write(Level l, std::string_view who, std::string_view text);
+
+// Where lines go instead of stderr (tests that check what was logged; an embedding program's
+// own logger); an empty function restores stderr. Called under the log's lock, one line a call.
+using Sink = std::function<void(Level, std::string_view who, std::string_view text)>;
+void set_sink(Sink sink);
 
 inline void debug(std::string_view who, const std::string& t) {
   if (enabled(Level::Debug)) write(Level::Debug, who, t);

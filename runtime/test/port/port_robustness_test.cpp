@@ -2,13 +2,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // Bad peers: garbage, truncation, oversized messages, vanishing peers, stalled readers,
-// anonymous senders and a rooted sender reconnecting. The port must log, drop the one
-// connection and keep serving everybody else.
+// anonymous senders and a rooted sender reconnecting. The port must log a line naming the peer
+// and what was wrong, drop the one connection and keep serving everybody else.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <initializer_list>
+#include <mutex>
+#include <string>
+#include <string_view>
 #include <thread>
+#include <vector>
 
 #include "../support/wire_helpers.hpp"
 #include "port_test_util.hpp"
@@ -57,10 +62,39 @@ bool closed_by_peer(net::TcpStream& s) {
 
 }  // namespace
 
+// Captures what the ports log, so each test can check the line that names what went wrong.
 class PortRobustness : public ::testing::Test {
  protected:
-  void SetUp() override { log::set_level(log::Level::Off); }
-  void TearDown() override { log::set_level(log::Level::Warn); }
+  void SetUp() override {
+    log::set_level(log::Level::Warn);
+    log::set_sink([this](log::Level, std::string_view who, std::string_view text) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      lines_.push_back(std::string(who) + ": " + std::string(text));
+    });
+  }
+  void TearDown() override { log::set_sink({}); }
+
+  // Waits (up to 5 s) for a logged line holding every fragment; on failure, shows what was logged.
+  ::testing::AssertionResult logged(std::initializer_list<std::string> fragments) {
+    auto found = [&] {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (const auto& line : lines_) {
+        bool all = true;
+        for (const auto& f : fragments) all = all && line.find(f) != std::string::npos;
+        if (all) return true;
+      }
+      return false;
+    };
+    if (eventually(found)) return ::testing::AssertionSuccess();
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::string seen;
+    for (const auto& line : lines_) seen += "\n  " + line;
+    return ::testing::AssertionFailure() << "no such line; logged:" << seen;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> lines_;
 };
 
 TEST_F(PortRobustness, GarbageIndexClosesThatConnectionOnly) {
@@ -72,6 +106,7 @@ TEST_F(PortRobustness, GarbageIndexClosesThatConnectionOnly) {
   send(s, std::string("this is not an index at all"));
   EXPECT_TRUE(closed_by_peer(s));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: input from /w (127.0.0.1:", "expected index header YA 0a 00 00 00 RP at byte offset 0"}));
 }
 
 TEST_F(PortRobustness, BadPortCommandMarkerIsRejected) {
@@ -84,6 +119,7 @@ TEST_F(PortRobustness, BadPortCommandMarkerIsRejected) {
               "00 00 00 00 21 44 00 01"));
   EXPECT_TRUE(closed_by_peer(s));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: input from /w (127.0.0.1:", "expected '~' (0x7e) at byte offset 30, found 0x21"}));
 }
 
 TEST_F(PortRobustness, OversizedMessageIsRefusedBeforeReadingIt) {
@@ -99,6 +135,7 @@ TEST_F(PortRobustness, OversizedMessageIsRefusedBeforeReadingIt) {
               "00 00 00 00"));
   EXPECT_TRUE(closed_by_peer(s));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: input from /w", "announces 100000008 bytes, more than the maximum message size of 1000"}));
 }
 
 TEST_F(PortRobustness, MalformedBottleIsDroppedAndTheConnectionKeepsWorking) {
@@ -118,6 +155,7 @@ TEST_F(PortRobustness, MalformedBottleIsDroppedAndTheConnectionKeepsWorking) {
   ASSERT_TRUE(r.read(b, false, 5000ms));
   EXPECT_EQ(b.to_text(), "7");
   EXPECT_EQ(read_n(s, 8), hex("59 41 00 00 00 00 52 50"));
+  EXPECT_TRUE(logged({"/r: dropped a message from /w (127.0.0.1:", "list count 5 needs at least 25 bytes"}));
 }
 
 TEST_F(PortRobustness, PeerVanishingMidMessageFreesTheInput) {
@@ -132,6 +170,7 @@ TEST_F(PortRobustness, PeerVanishingMidMessageFreesTheInput) {
   }  // closed half way through the index
   EXPECT_TRUE(eventually([&] { return r.input_names().empty(); }));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: input from /w", "closed the connection after 6 of 12 expected bytes"}));
 }
 
 TEST_F(PortRobustness, TruncatedHandshakeAndSilentPeerTimeOut) {
@@ -148,6 +187,8 @@ TEST_F(PortRobustness, TruncatedHandshakeAndSilentPeerTimeOut) {
   send(liar, hex("59 41 e4 1e 00 00 52 50 ff ff ff 7f"));  // sender name of 2 GB
   EXPECT_TRUE(closed_by_peer(liar));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: rejected a connection: reading from peer 127.0.0.1:", "timed out"}));
+  EXPECT_TRUE(logged({"/r: rejected a connection: handshake from 127.0.0.1:", "sender name length 2147483647 at byte offset 8 is outside 1..1000"}));
 }
 
 TEST_F(PortRobustness, StalledReaderIsDroppedWithoutStoppingOtherOutputs) {
@@ -179,6 +220,7 @@ TEST_F(PortRobustness, StalledReaderIsDroppedWithoutStoppingOtherOutputs) {
   EXPECT_EQ(w.output_names(), std::vector<std::string>{"/good"});
   EXPECT_EQ(received.load(), 10);
   staller.join();
+  EXPECT_TRUE(logged({"/w: dropping output to /stall (127.0.0.1:", "timed out"}));
 }
 
 TEST_F(PortRobustness, AnonymousSendersAreServedAndNotReplaced) {
@@ -247,4 +289,5 @@ TEST_F(PortRobustness, ConnectionsBeyondTheInputLimitAreClosedAtOnce) {
   held.clear();  // the three leave; their slots free up
   ASSERT_TRUE(eventually([&] { return r.input_names().empty(); }));
   expect_still_serving(r);
+  EXPECT_TRUE(logged({"/r: refused a connection from 127.0.0.1:", "already 3 inputs (the limit)"}));
 }
