@@ -52,6 +52,8 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
   std::atomic<int> acceptor_tid{-1};
   std::atomic<bool> open{false};
   std::atomic<bool> closing{false};
+  // How the owner has used the port so far, for [prop] [get] /thisport (YARP's port flags).
+  std::atomic<bool> used_for_input{false}, used_for_output{false}, used_for_rpc{false};
 
   mutable std::mutex mutex;  // outputs, inputs, resolver, properties
   std::vector<std::shared_ptr<OutputUnit>> outputs;

@@ -125,6 +125,7 @@ void Port::Core::drop_output(const std::shared_ptr<OutputUnit>& unit, const std:
 }
 
 void Port::add_output(const std::string& target, const std::string& carrier) {
+  core_->used_for_output = true;
   Target t = parse_target(target);
   auto c = core_->resolve(t.name);
   if (!c) throw Error("cannot connect " + core_->name + " to " + target + ": no such port is registered");
@@ -132,7 +133,10 @@ void Port::add_output(const std::string& target, const std::string& carrier) {
   core_->connect_output(*c, carrier.empty() ? t.carrier : carrier);
 }
 
-void Port::add_output(const Contact& to) { core_->connect_output(to, to.carrier); }
+void Port::add_output(const Contact& to) {
+  core_->used_for_output = true;
+  core_->connect_output(to, to.carrier);
+}
 
 bool Port::remove_output(const std::string& name) {
   std::string report;
@@ -166,6 +170,7 @@ void Port::set_envelope(std::string envelope) {
 }
 
 bool Port::write(const Bottle& b) {
+  core_->used_for_output = true;
   std::lock_guard<std::mutex> wlock(core_->write_mutex);
   std::vector<std::shared_ptr<OutputUnit>> outs;
   {
@@ -205,6 +210,8 @@ bool Port::write(const Bottle& b) {
 }
 
 bool Port::write(const Bottle& b, Bottle& reply) {
+  core_->used_for_output = true;
+  core_->used_for_rpc = true;
   std::lock_guard<std::mutex> wlock(core_->write_mutex);
   std::shared_ptr<OutputUnit> o;
   {

@@ -9,7 +9,7 @@
 //                                    for each connection to or from /peer
 //   [prop] [set] /peer (qos ((tos n)))  or ((dscp AF41|n)) or ((priority LOW|NORM|HIGH|CRIT))
 //   [prop] [set] /peer (sched ((priority p) (policy q)))   the input thread's scheduling
-//   [prop] [get] /thisport           (sched ...) (process ...) (platform ...)
+//   [prop] [get] /thisport           (sched ...) (process ...) (platform ...) (port ...)
 //   [prop] [set] /thisport (process ((priority p) (policy q)))   every thread of the process
 // QoS is the IP_TOS byte of the connection's own socket; scheduling is Linux's per-thread
 // policy and priority (SCHED_OTHER 0, SCHED_FIFO 1, SCHED_RR 2), which need privileges to raise.
@@ -198,7 +198,11 @@ Bottle Port::Core::admin_prop(const Bottle& cmd) {
       return v.is_null() ? Bottle{} : Bottle{v};
     }
     if (key == name) {
-      return Bottle{sched_group(acceptor_tid), process_group(), platform_group(address.host)};
+      return Bottle{sched_group(acceptor_tid), process_group(), platform_group(address.host),
+                    group("port", {{"is_input", Value(used_for_input ? 1 : 0)},
+                                   {"is_output", Value(used_for_output ? 1 : 0)},
+                                   {"is_rpc", Value(used_for_rpc ? 1 : 0)},
+                                   {"type", Value("")}})};  // no declared message type
     }
     Bottle r;
     for (auto& in : inputs) {
@@ -215,7 +219,7 @@ Bottle Port::Core::admin_prop(const Bottle& cmd) {
     return r;
   }
 
-  if (action != "set") return fail("property action not known: use [prop] [get] or [prop] [set]");
+  if (action != "set") return fail("property action not known");  // YARP's words
   if (key.empty()) return fail("[prop] [set] needs a property name or a port name");
   if (!is_port) {
     Bottle kept;

@@ -7,12 +7,15 @@
 namespace robogene {
 
 void Port::set_reader(Reader r) {
+  core_->used_for_input = core_->used_for_input || static_cast<bool>(r);
   std::lock_guard<std::mutex> lock(core_->reader_mutex);
   core_->reader = std::move(r);
 }
 
 bool Port::read(Bottle& b, bool will_reply, net::Millis timeout, MessageInfo* info) {
   auto& c = *core_;
+  c.used_for_input = true;
+  if (will_reply) c.used_for_rpc = true;
   std::unique_lock<std::mutex> lk(c.hand_mutex);
   if (c.replying) {  // a previous read promised a reply it never gave: release that sender
     c.replying->done = true;

@@ -101,4 +101,8 @@ TEST_F(PortPropertiesConnected, OwnNameDescribesThreadProcessAndPlatform) {
   ASSERT_NE(platform, nullptr);
   EXPECT_EQ(platform->get(1).as_list().find("os").as_string(), "Linux");
   EXPECT_EQ(platform->get(1).as_list().find("hostname").as_string(), "127.0.0.1");
+  // /w has only had an output added; /r has not been read from yet.
+  EXPECT_EQ(reply.find_group("port")->to_text(), "port ((is_input 0) (is_output 1) (is_rpc 0) (type \"\"))");
+  r.set_reader([](const Bottle&, const MessageInfo&, Bottle*) {});
+  EXPECT_NE(admin(r, "[prop] [get] /r").find("(port ((is_input 1) (is_output 0) (is_rpc 0)"), std::string::npos);
 }
