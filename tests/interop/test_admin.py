@@ -23,13 +23,18 @@ def ask(yarp, port, requests):
     return answers
 
 
-@pytest.mark.parametrize("role", ["writer", "reader"])
-def test_our_ports_answer_admin_requests_like_yarp_ports(role, yarpserver, yarp, ours, net):
+def start_pairs(yarp, ours, net):
+    """A YARP writer connected to a YARP reader, and the same pair of ours."""
     yarp.read("/interop/yr")
     yarp.write("/interop/yw", "/interop/yr")
     ours.read("/interop/or")
     ours.write("/interop/ow", "/interop/or")
     interop_net.wait_connection(net.ns_port, "/interop/ow", "/interop/or")
+
+
+@pytest.mark.parametrize("role", ["writer", "reader"])
+def test_our_ports_answer_admin_requests_like_yarp_ports(role, yarpserver, yarp, ours, net):
+    start_pairs(yarp, ours, net)
     results = {}
     for side, (w, r) in (("yarp", ("/interop/yw", "/interop/yr")), ("robogene", ("/interop/ow", "/interop/or"))):
         requests = [q.replace("/R", r).replace("/W", w) for q in REQUESTS]
@@ -50,11 +55,7 @@ MASKS = [(r"\((tid|pid) \d+\)", r"(\1 N)"), (r'\(name "[^"]*"\)', "(name X)"),
 
 @pytest.mark.parametrize("role", ["writer", "reader"])
 def test_our_ports_answer_prop_requests_like_yarp_ports(role, yarpserver, yarp, ours, net):
-    yarp.read("/interop/yr")
-    yarp.write("/interop/yw", "/interop/yr")
-    ours.read("/interop/or")
-    ours.write("/interop/ow", "/interop/or")
-    interop_net.wait_connection(net.ns_port, "/interop/ow", "/interop/or")
+    start_pairs(yarp, ours, net)
     results = {}
     for side, (w, r) in (("yarp", ("/interop/yw", "/interop/yr")), ("robogene", ("/interop/ow", "/interop/or"))):
         me, peer = (w, r) if role == "writer" else (r, w)

@@ -14,18 +14,6 @@ using namespace robogene;
 using namespace robogene::test;
 using namespace std::chrono_literals;
 
-namespace {
-
-// One text_ack admin exchange on a fresh connection, as `yarp connect` does it.
-std::string admin_text(const Port& p, const std::string& request) {
-  auto s = net::TcpStream::connect({"127.0.0.1", p.contact().port});
-  send(s, std::string("CONNACK admin\r\n"));
-  EXPECT_EQ(read_until(s, "\r\n"), "Welcome admin\r\n");
-  send(s, "a\r\n" + request + "\r\n");
-  return read_until(s, "<ACK>\r\n");
-}
-
-}  // namespace
 
 TEST(PortAdmin, YarpConnectAndDisconnectTranscript) {
   PortTable t;

@@ -17,14 +17,11 @@ using namespace robogene::test;
 
 namespace {
 
-// One text_ack admin exchange, as `yarp admin rpc` / `yarp connect` do it; the reply line.
+// The reply line of one admin exchange, without its "\r\n<ACK>\r\n".
 std::string admin(const Port& p, const std::string& request) {
-  auto s = net::TcpStream::connect({"127.0.0.1", p.contact().port});
-  send(s, std::string("CONNACK admin\r\n"));
-  EXPECT_EQ(read_until(s, "\r\n"), "Welcome admin\r\n");
-  send(s, "a\r\n" + request + "\r\n");
-  std::string reply = read_until(s, "<ACK>\r\n");
-  return reply.substr(0, reply.size() - std::string("\r\n<ACK>\r\n").size());
+  std::string reply = admin_text(p, request);
+  const std::string end = "\r\n<ACK>\r\n";
+  return reply.size() >= end.size() ? reply.substr(0, reply.size() - end.size()) : reply;
 }
 
 struct PortPropertiesConnected : ::testing::Test {

@@ -11,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "../support/wire_helpers.hpp"
 #include "robogene/port.hpp"
 
 namespace robogene::test {
@@ -39,6 +40,16 @@ inline void open_local(Port& p, const std::string& name, PortTable& table) {
   p.open_at(name, {"127.0.0.1", 0});
   p.set_resolver(table.resolver());
   table.add(p);
+}
+
+// One text_ack admin exchange on a fresh connection, as `yarp connect` does it: the reply with
+// its "\r\n<ACK>\r\n" ending.
+inline std::string admin_text(const Port& p, const std::string& request) {
+  auto s = net::TcpStream::connect({"127.0.0.1", p.contact().port});
+  send(s, std::string("CONNACK admin\r\n"));
+  if (read_until(s, "\r\n") != "Welcome admin\r\n") return "(no welcome)";
+  send(s, "a\r\n" + request + "\r\n");
+  return read_until(s, "<ACK>\r\n");
 }
 
 // Polls `condition` every 10 ms for up to 5 s; whether it became true.
