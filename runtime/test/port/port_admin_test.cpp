@@ -14,7 +14,6 @@ using namespace robogene;
 using namespace robogene::test;
 using namespace std::chrono_literals;
 
-
 TEST(PortAdmin, YarpConnectAndDisconnectTranscript) {
   PortTable t;
   Port w, r;
