@@ -6,11 +6,13 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <thread>
 
 #include "commands.hpp"
 #include "robogene/error.hpp"
+#include "robogene/name/fallback.hpp"
 #include "robogene/name/name_server.hpp"
 #include "robogene/name/name_service.hpp"
 #include "robogene/name/registry.hpp"
@@ -30,6 +32,7 @@ int cmd_server(Args& args) {
   double sweep_seconds = 60;
   if (auto s = args.option("--sweep")) sweep_seconds = parse_seconds(*s, "--sweep");
   bool write_conf = !args.flag("--read");
+  bool fallback = !args.flag("--no-fallback");
   name::NameServerLimits limits;
   if (auto m = args.option("--max-message")) {
     limits.max_message = parse_bytes(*m, "--max-message");
@@ -49,6 +52,20 @@ int cmd_server(Args& args) {
   name::NameService service(registry, config, &probe);
   name::NameServer server(service, std::move(listener), limits);
   if (write_conf) write_yarp_conf(net::Endpoint{ip, config.port});
+  // The multicast fallback lets programs without yarp.conf find us (`robogene detect`, `yarp
+  // detect`); like yarpserver, it is registered as "fallback". Without multicast we still serve.
+  std::unique_ptr<name::FallbackResponder> responder;
+  if (fallback) {
+    try {
+      responder = std::make_unique<name::FallbackResponder>(service, ip);
+      const net::Endpoint& g = responder->group();
+      registry.put(name::Registration{"fallback", "mcast", g.host, g.port, "*", 0});
+    } catch (const NetworkError& e) {
+      std::fprintf(stderr, "robogene server: no multicast fallback (%s); clients need yarp.conf or --server\n",
+                   e.what());
+    }
+  }
+  if (!responder) registry.remove("fallback");
 
   std::mutex mutex;
   std::condition_variable wake;
@@ -71,6 +88,7 @@ int cmd_server(Args& args) {
               db_path.c_str());
   std::fflush(stdout);
   wait_for_shutdown_signal();
+  responder.reset();
   server.stop();
   serving.join();
   {

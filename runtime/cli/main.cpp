@@ -23,8 +23,11 @@ struct Command {
 };
 
 const Command kCommands[] = {
-    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S] [--max-message BYTES]",
+    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S] [--max-message BYTES] [--no-fallback]",
      "run the name server /root (default 127.0.0.1:10000); registrations persist in FILE", robogene::cli::cmd_server},
+    {"detect", "robogene detect [--write] [--ip IFACE] [--timeout S]",
+     "find the name server over multicast, without yarp.conf (as yarp detect); --write saves it",
+     robogene::cli::cmd_detect},
     {"name", "robogene name query|list|register|unregister|set|get|check|route|gc ARGS... [--server HOST:PORT]",
      "ask the name server, printing its replies as `yarp name` does", robogene::cli::cmd_name},
     {"read", "robogene read /port [/source] [--envelope] [--max-message BYTES] [--server HOST:PORT]",

@@ -189,3 +189,35 @@ def test_server_stops_cleanly_with_clients_connected(start_name_server, tmp_path
         assert server.proc.wait_exit() == 0, server.proc.describe()
         for c in clients:
             c.close()
+
+
+def free_udp_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_detect_finds_the_server_over_multicast_without_yarp_conf(start_name_server, cli, yarp_env):
+    # A group port of this test's own ($YARP_PORT_RANGE, as YARP reads it), so that no other
+    # name server on this machine answers.
+    yarp_env["YARP_PORT_RANGE"] = str(free_udp_port())
+    server = start_name_server()
+    listing = ok(cli("name", "list"))
+    assert f"registration name fallback ip 224.2.1.1 port {yarp_env['YARP_PORT_RANGE']} type mcast" in listing
+    conf = os.path.join(yarp_env["YARP_CONFIG_HOME"], "yarp.conf")
+    os.remove(conf)
+    found = ok(cli("detect", "--ip", "127.0.0.1"))
+    assert found == f"/root is available at ip 127.0.0.1 port {server.port}\n"
+    assert not os.path.exists(conf)
+    ok(cli("detect", "--write", "--ip", "127.0.0.1"))
+    with open(conf) as f:
+        assert f.read().split() == ["127.0.0.1", str(server.port), "yarp"]
+
+
+def test_detect_without_a_fallback_fails_clearly(start_name_server, cli, yarp_env):
+    yarp_env["YARP_PORT_RANGE"] = str(free_udp_port())
+    start_name_server("--no-fallback")
+    assert "fallback" not in ok(cli("name", "list"))
+    r = cli("detect", "--ip", "127.0.0.1", "--timeout", "0.6")
+    assert r.returncode == 1
+    assert "no name server answered for /root on the multicast group 224.2.1.1:" in r.stderr
