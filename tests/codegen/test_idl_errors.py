@@ -251,6 +251,37 @@ def test_echo_past_the_request(tmp_path):
     assert err == f"{tmp_path}/i.yaml:9:11: error: echo 2 of 'getThing' is past the end of its request (2 vocabs and 0 arguments)"
 
 
+def test_stamp_applies_only_to_queries(tmp_path):
+    err = one_error(tmp_path, {"i.yaml": iface("""\
+        - name: stop
+          doc: Stop.
+          wire: [set, sto]
+          stamp: false
+        """)})
+    assert err == (f"{tmp_path}/i.yaml:9:5: error: 'stamp' concerns the reply to a query; 'stop' has no "
+                   "results, so its reply is [ok] or [fail]")
+
+
+def test_an_unstamped_query_changes_the_fingerprint_and_its_all_axes_form(tmp_path):
+    query = """\
+        - name: getThing
+          doc: Get.
+          wire: [get, thng]{stamp}
+          args:
+            - {{name: j, type: joint}}
+          results:
+            - {{name: v, type: float64}}
+          all_axes: {{name: getThings, wire: [get, thns]}}
+        """
+    (tmp_path / "i.yaml").write_text(iface(query.format(stamp="")))
+    stamped = compile_directory(tmp_path).interfaces[0]
+    (tmp_path / "i.yaml").write_text(iface(query.format(stamp="\n          stamp: false")))
+    unstamped = compile_directory(tmp_path).interfaces[0]
+    assert [m.stamp for m in stamped.methods] == [True, True]
+    assert [m.stamp for m in unstamped.methods] == [False, False]
+    assert stamped.fingerprint != unstamped.fingerprint
+
+
 def test_image_cannot_travel_by_rpc(tmp_path):
     err = one_error(tmp_path, {"i.yaml": iface("""\
         - name: getImage

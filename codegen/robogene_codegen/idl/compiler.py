@@ -349,7 +349,7 @@ class _Checker:
                                         for k, v in enumerate(wire)):
             return []
         if wire is None:
-            for key in ("echo", "all_axes"):
+            for key in ("echo", "stamp", "all_axes"):
                 if key in raw:
                     self.error(doc.key_mark(path + (key,)), f"'{key}' needs a 'wire' path; "
                                f"'{raw['name']}' is local-only")
@@ -365,8 +365,13 @@ class _Checker:
         echo = self._echo(doc, path, raw.get("echo"), wire, len(args), raw["name"])
         if echo is False:
             return []
+        stamp = raw.get("stamp", True)
+        if "stamp" in raw and not results:
+            self.error(doc.key_mark(path + ("stamp",)), f"'stamp' concerns the reply to a query; "
+                       f"'{raw['name']}' has no results, so its reply is [ok] or [fail]")
+            return []
         single = Method(iface, raw["name"], raw.get("cpp_name", raw["name"]), raw["doc"], wire,
-                        echo, args, results, mark)
+                        echo, args, results, mark, stamp=stamp)
         forms = [single]
         all_raw = raw.get("all_axes")
         if all_raw is not None:
@@ -392,7 +397,7 @@ class _Checker:
             single.form, single.twin = "axis", all_raw["name"]
             forms.append(Method(iface, all_raw["name"], all_raw.get("cpp_name", all_raw["name"]),
                                 all_raw.get("doc", f"{raw['doc']} All axes at once."), awire, aecho, aargs, aresults,
-                                doc.mark(apath + ("name",)), form="all", twin=raw["name"]))
+                                doc.mark(apath + ("name",)), form="all", twin=raw["name"], stamp=stamp))
         return forms
 
     def _echo(self, doc: Document, path: tuple, echo, wire, nargs: int, name: str):

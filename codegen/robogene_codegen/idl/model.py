@@ -96,6 +96,7 @@ class Method:
     mark: Mark
     form: str = "single"   # "single", "axis" (has an all-axes twin) or "all"
     twin: Optional[str] = None  # name of the other form
+    stamp: bool = True     # a query's reply carries [tsta] <n> <t> (YARP's appendTimeStamp)
 
     @property
     def reply(self) -> str:

@@ -73,8 +73,8 @@ def call_args(m: Method) -> str:
 
 def route_init(r: Route) -> str:
     path = ", ".join(f'vocab("{v}")' for v in r.wire)
-    value = "true" if r.method.results else "false"
-    return f"{{{{{path}}}, {len(r.wire)}, {value}, &{r.handler}}}"
+    stamped = "true" if r.method.results and r.method.stamp else "false"
+    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, &{r.handler}}}"
 
 
 def command_routes(service: Service) -> list:

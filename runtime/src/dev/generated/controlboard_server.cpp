@@ -22,7 +22,7 @@ using Handler = bool (*)(const ControlboardServer::Interfaces&, const Bottle&, B
 struct Route {
   vocab_t path[3];
   std::size_t length;
-  bool value_reply;
+  bool stamped;  // a query whose reply carries [tsta] <n> <t>; YARP's IPidControl replies do not
   Handler handler;
 };
 
@@ -1021,16 +1021,16 @@ bool h_set_vmos(const ControlboardServer::Interfaces& d, const Bottle& req, Bott
 const Route kRoutes[] = {
     {{vocab("get"), vocab("icmd"), vocab("cmds")}, 3, true, &h_get_icmd_cmds},
     {{vocab("get"), vocab("icmd"), vocab("cmod")}, 3, true, &h_get_icmd_cmod},
-    {{vocab("get"), vocab("pid"), vocab("err")}, 3, true, &h_get_pid_err},
-    {{vocab("get"), vocab("pid"), vocab("errs")}, 3, true, &h_get_pid_errs},
-    {{vocab("get"), vocab("pid"), vocab("lim")}, 3, true, &h_get_pid_lim},
-    {{vocab("get"), vocab("pid"), vocab("lims")}, 3, true, &h_get_pid_lims},
-    {{vocab("get"), vocab("pid"), vocab("out")}, 3, true, &h_get_pid_out},
-    {{vocab("get"), vocab("pid"), vocab("outs")}, 3, true, &h_get_pid_outs},
-    {{vocab("get"), vocab("pid"), vocab("pid")}, 3, true, &h_get_pid_pid},
-    {{vocab("get"), vocab("pid"), vocab("pids")}, 3, true, &h_get_pid_pids},
-    {{vocab("get"), vocab("pid"), vocab("ref")}, 3, true, &h_get_pid_ref},
-    {{vocab("get"), vocab("pid"), vocab("refs")}, 3, true, &h_get_pid_refs},
+    {{vocab("get"), vocab("pid"), vocab("err")}, 3, false, &h_get_pid_err},
+    {{vocab("get"), vocab("pid"), vocab("errs")}, 3, false, &h_get_pid_errs},
+    {{vocab("get"), vocab("pid"), vocab("lim")}, 3, false, &h_get_pid_lim},
+    {{vocab("get"), vocab("pid"), vocab("lims")}, 3, false, &h_get_pid_lims},
+    {{vocab("get"), vocab("pid"), vocab("out")}, 3, false, &h_get_pid_out},
+    {{vocab("get"), vocab("pid"), vocab("outs")}, 3, false, &h_get_pid_outs},
+    {{vocab("get"), vocab("pid"), vocab("pid")}, 3, false, &h_get_pid_pid},
+    {{vocab("get"), vocab("pid"), vocab("pids")}, 3, false, &h_get_pid_pids},
+    {{vocab("get"), vocab("pid"), vocab("ref")}, 3, false, &h_get_pid_ref},
+    {{vocab("get"), vocab("pid"), vocab("refs")}, 3, false, &h_get_pid_refs},
     {{vocab("get"), vocab("torq"), vocab("axes")}, 3, true, &h_get_torq_axes},
     {{vocab("get"), vocab("torq"), vocab("ref")}, 3, true, &h_get_torq_ref},
     {{vocab("get"), vocab("torq"), vocab("refs")}, 3, true, &h_get_torq_refs},
@@ -1216,8 +1216,8 @@ Bottle ControlboardServer::respond(const Bottle& req) {
   }
   for (const Route& route : kRoutes) {
     if (!matches(req, route.path, route.length)) continue;
-    // Queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
-    const std::int32_t stamp = route.value_reply ? stamps_++ : 0;
+    // Stamped queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
+    const std::int32_t stamp = route.stamped ? stamps_++ : 0;
     Bottle reply;
     bool ok = false;
     try {
@@ -1226,7 +1226,7 @@ Bottle ControlboardServer::respond(const Bottle& req) {
       ok = false;  // a device that throws answers like one that fails
     }
     if (!ok) return single("fail");
-    if (route.value_reply) {
+    if (route.stamped) {
       rpc::finish_value_reply(reply, stamp, now_seconds());
     } else {
       reply.add(Value::vocab(vocab("ok")));
