@@ -172,6 +172,26 @@ def test_property_from_ini_command_line_and_dict():
     assert [n.find(k) for k in ("hex", "oct", "notoct", "neg", "f")] == [31, 8, "09", -5, 1000.0]
 
 
+def test_property_from_a_bottle_as_the_cpp_one_reads_it():
+    from robogene import Bottle  # the compiled core
+    b = Bottle.from_text('(device test_motor) (axes 2) (pos 1 2.5) (name "/m x") (mode [vel]) (flag) '
+                         '(lim (0.0 90.5)) (GENERAL (Joints 4) (AxisName "neck" "eyes"))')
+    p = Property.from_bottle(b)
+    assert p.get_string("device", "") == "test_motor" and p.get_int("axes", 0, 1, 64) == 2
+    assert p.find("pos") == [1, 2.5] and p.get_string("name", "") == "/m x"
+    assert p.find("mode") == "vel" and p.get_bool("flag", False) is True
+    assert p.find("lim") == [0.0, 90.5]  # a list value, not a group: its first item is no key
+    general = p.find_group("GENERAL")
+    assert general.get_int("Joints", 0, 0, 9) == 4 and general.find("AxisName") == ["neck", "eyes"]
+    assert p.origin("axes") == "bottle item 1" and general.origin("Joints") == "bottle item 7 item 0"
+    with pytest.raises(ConfigError, match=r"^bottle item 1: expected \(key value\.\.\.\), got 7$"):
+        Property.from_bottle(Bottle.from_text("(axes 2) 7"))
+    device = PolyDriver()
+    assert not device.open(Property.from_bottle(Bottle.from_text("(device test_motor) (axes 100)"), "rpc"))
+    assert device.last_error == "device 'test_motor': rpc item 1: key 'axes': 100 is outside [1, 64]"
+    assert device.open(Property.from_bottle(b)) and device.view(IEncoders).getAxes() == 2
+
+
 @pytest.mark.parametrize("text,message", [
     ("axes 2\n  speed (1 2\n", "m.ini:2:9: '(' has no matching ')'"),
     ("axes 2\n[broken\n", "m.ini:2:1: a group header is [name], got '[broken'"),
