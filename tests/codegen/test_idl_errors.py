@@ -282,6 +282,29 @@ def test_an_unstamped_query_changes_the_fingerprint_and_its_all_axes_form(tmp_pa
     assert stamped.fingerprint != unstamped.fingerprint
 
 
+def test_command_aliases_must_name_a_command_and_not_overlap(tmp_path):
+    errs = errors_of(tmp_path, {
+        "a.yaml": iface("- {name: stop, doc: Stop., wire: [set, sto]}\n"
+                        "- {name: get, doc: Get., wire: [get, thng], results: [{name: v, type: int32}]}\n",
+                        name="IA"),
+        "s.yaml": "idl: 1\nservice: board\nversion: 1\ndoc: B.\nrpc_port: rpc:i\ninterfaces: [IA]\n"
+                  "command:\n  port: command:i\n  doc: C.\n  prefix: [set]\n  aliases:\n"
+                  "    - {head: [halt], method: IA.stop}\n"
+                  "    - {head: [sto, x], method: IA.stop}\n"
+                  "    - {head: [g], method: IA.get}\n"
+                  "    - {head: [h], method: IB.stop}\n",
+    })
+    assert errs == [
+        f"{tmp_path}/s.yaml:13:14: error: command alias [sto] [x] overlaps the head [sto] of IA.stop",
+        f"{tmp_path}/s.yaml:14:27: error: command alias [g]: 'IA.get' is not a command (a method with a wire path "
+        "and no results)",
+        f"{tmp_path}/s.yaml:15:27: error: command alias [h]: 'IB.stop' is not a method of this service's interfaces",
+    ]
+    (tmp_path / "s.yaml").write_text((tmp_path / "s.yaml").read_text().split("    - {head: [sto")[0])
+    command = compile_directory(tmp_path).services[0].command
+    assert [(h, m.name) for h, m in command.aliases] == [(("halt",), "stop")]
+
+
 def test_image_cannot_travel_by_rpc(tmp_path):
     err = one_error(tmp_path, {"i.yaml": iface("""\
         - name: getImage

@@ -223,6 +223,13 @@ def test_command_port_carries_streamed_moves():
         "[is] [poss] (10.0 20.0 30.0 40.0)")
     for bad in ("([vmo] 9) (1.0)", "([bogus] 1) (1.0)", "([vmo] 1)", "([encs]) ()", "[vmo] 1 1.0"):
         assert server.command(Bottle.from_text(bad)) is False, bad
+    # YARP 3.5's remote_controlboard streams torque references as [dtq] j and [dtqs] (IDL aliases).
+    assert server.command(Bottle.from_text("([dtq] 1) (0.5)"))
+    assert server.command(Bottle.from_text("([dtqs]) (0.25 0.5 0.75 1.0)"))
+    assert server.respond(Bottle.from_text("[get] [torq] [refs]")).to_text().startswith(
+        "[is] [torq] (0.25 0.5 0.75 1.0) [tsta]")
+    for bad in ("([dtq] 1) (9.0)", "([dtq]) (0.5)", "([dtqs]) (0.5 0.5)"):
+        assert server.command(Bottle.from_text(bad)) is False, bad
 
 
 def test_stream_messages_match_yarp():

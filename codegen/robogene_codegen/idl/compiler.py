@@ -482,9 +482,39 @@ class _Checker:
                 if not routes:
                     self.error(doc.mark(("command", "prefix")), "no command of this service starts "
                                f"with {_vocab_text(prefix)}")
-                command = Command(c["port"], c["doc"], prefix, routes)
+                aliases = self._command_aliases(doc, c.get("aliases", []), members, routes)
+                command = Command(c["port"], c["doc"], prefix, routes + aliases, aliases)
         return Service(data["service"], data["version"], data["doc"], data["rpc_port"], members,
                        protocol, introspection, streams, command, doc.file, doc.mark(("service",)))
+
+    def _command_aliases(self, doc: Document, raws: list, members: list[Interface], routes: list) -> list:
+        """Other heads for commands of the service (YARP's [dtq] j for setRefTorque(j, t)): each
+        names a command (a method without results) of a member interface, and no head shadows
+        another."""
+        heads = {head: f"{m.interface}.{m.name}" for head, m in routes}
+        aliases = []
+        for k, raw in enumerate(raws):
+            mark = doc.mark(("command", "aliases", k, "method"))
+            head = tuple(raw["head"])
+            if not all(self._vocab_ok(v, doc.mark(("command", "aliases", k, "head", n))) for n, v in enumerate(head)):
+                continue
+            iname, mname = raw["method"].split(".")
+            iface = next((i for i in members if i.name == iname), None)
+            method = next((m for m in iface.methods if m.name == mname), None) if iface else None
+            if method is None:
+                self.error(mark, f"command alias {_vocab_text(head)}: '{raw['method']}' is not a method of "
+                           "this service's interfaces")
+            elif method.results or not method.wire:
+                self.error(mark, f"command alias {_vocab_text(head)}: '{raw['method']}' is not a command "
+                           "(a method with a wire path and no results)")
+            elif any(h[:len(head)] == head or head[:len(h)] == h for h in heads):
+                other = next(h for h in heads if h[:len(head)] == head or head[:len(h)] == h)
+                self.error(doc.mark(("command", "aliases", k, "head")), f"command alias {_vocab_text(head)} "
+                           f"overlaps the head {_vocab_text(other)} of {heads[other]}")
+            else:
+                heads[head] = raw["method"]
+                aliases.append((head, method))
+        return aliases
 
     def _service_collisions(self, doc: Document, members: list[Interface],
                             protocol: Optional[Protocol], introspection: Optional[tuple]) -> None:

@@ -67,6 +67,8 @@ def assign_service(service: Service) -> None:
         "streams": [{"name": s.name, "port": s.port, "source": f"{s.interface}.{s.method.name}",
                      "period": s.period} for s in service.streams],
         "command": None if service.command is None else {
-            "port": service.command.port, "prefix": list(service.command.prefix)},
+            "port": service.command.port, "prefix": list(service.command.prefix),
+            **({"aliases": [[list(h), f"{m.interface}.{m.name}"] for h, m in service.command.aliases]}
+               if service.command.aliases else {})},
     }
     service.canonical, service.fingerprint = _digest(canonical)

@@ -145,7 +145,12 @@ class Command:
     port: str
     doc: str
     prefix: tuple
-    routes: list  # [(path after the prefix, Method)], commands only
+    routes: list  # [(head path, Method)]: the path after the prefix, or an alias's head
+    aliases: list = None  # [(head path, Method)]: heads that are not a path of the service
+
+    @property
+    def alias_heads(self) -> list:
+        return [head for head, _ in self.aliases or []]
 
 
 @dataclass

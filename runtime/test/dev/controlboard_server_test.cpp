@@ -317,3 +317,18 @@ TEST(ControlboardServer, CommandPortCarriesStreamedMoves) {
   EXPECT_FALSE(board.server->command(Bottle::from_text("([encs]) ()")));         // a query
   EXPECT_FALSE(board.server->command(Bottle::from_text("[vmo] 1 1.0")));         // not a pair
 }
+
+// YARP 3.5's remote_controlboard streams torque references with heads of their own
+// (RemoteControlBoard::setRefTorque/setRefTorques): the IDL's command aliases [dtq] and [dtqs].
+TEST(ControlboardServer, CommandPortTakesYarpsTorqueHeads) {
+  Board board;
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([dtq] 1) (0.5)")));
+  EXPECT_EQ(board.ask("[get] [torq] [ref] 1").substr(0, 23), "[is] [torq] 0.5 [tsta] ");
+  EXPECT_EQ(board.ask("[get] [icmd] [cmod] 1").substr(0, 13), "[is] 1 [torq]");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([dtqs]) (0.25 0.5 0.75 1.0)")));
+  EXPECT_EQ(board.ask("[get] [torq] [refs]").substr(0, 39), "[is] [torq] (0.25 0.5 0.75 1.0) [tsta] ");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([torq] [ref] 0) (1.5)")));  // the [set] path works too
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtq] 1) (9.0)")));     // beyond max_torque
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtq]) (0.5)")));       // no joint
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtqs]) (0.5 0.5)")));  // 2 values for 4 axes
+}

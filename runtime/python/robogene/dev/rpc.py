@@ -215,16 +215,19 @@ class RpcServer:
         prefix = [vocab(w) for w in COMMANDS[self.service][1]]
         head, values = message[0].as_list(), message[1].as_list()
         codes = [vocab_of(head[i]) for i in range(len(head))]
-        for key in sorted(self._routes, key=len, reverse=True):
-            if list(key[:len(prefix)]) != prefix or len(key) == len(prefix) or self._routes[key][2]:
-                continue
-            path = key[len(prefix):]
-            if tuple(codes[:len(path)]) != path:
+        # (head, the request path it stands for): the service's commands without the prefix, and
+        # the aliases (YARP's [dtq] for [set] [torq] [ref]).
+        heads = [(key[len(prefix):], key) for key in self._routes
+                 if list(key[:len(prefix)]) == prefix and len(key) > len(prefix) and not self._routes[key][2]]
+        heads += [(tuple(vocab(w) for w in alias), tuple(vocab(w) for w in path))
+                  for alias, path in COMMANDS[self.service][2].items()]
+        for path, key in sorted(heads, key=lambda h: len(h[0]), reverse=True):
+            if tuple(codes[:len(path)]) != path or key not in self._routes:
                 continue
             request = Bottle()
-            for code in prefix:
+            for code in key:
                 request.add(Value.vocab(code))
-            for item in head:
+            for item in list(head)[len(path):]:
                 request.add(item)
             args = self._routes[key][1]
             if args and args[-1].endswith("[]"):

@@ -184,7 +184,7 @@ STRUCTS = {
 
 # service -> (fingerprint, interfaces, protocol (path, reply, version) or None, introspection path)
 SERVICES = {
-    "controlboard": ("5ebb81180fb3ac75", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
+    "controlboard": ("865f94bcbd3aedde", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
 (("get", "prot", ), "prot", [1, 9, 0]),
 ("get", "rgif", )),
     "grabber": ("a0683a2a407cd898", ("IFrameGrabberImage", "IFrameGrabberControls", ),
@@ -192,9 +192,13 @@ None,
 ("get", "rgif", )),
 }
 
-# service -> (command port, prefix) for services with a streaming command port
+# service -> (command port, prefix, {alias head: the request path it stands for}) for services
+# with a streaming command port
 COMMANDS = {
-    "controlboard": ("command:i", ("set", )),
+    "controlboard": ("command:i", ("set", ), {
+        ("dtq", ): ("set", "torq", "ref", ),  # ITorqueControl.setRefTorque
+        ("dtqs", ): ("set", "torq", "refs", ),  # ITorqueControl.setRefTorques
+    }),
 }
 
 # service -> {stream: (port, period in s, interface, method, result type)}
