@@ -13,8 +13,10 @@ generate: $(VENV)/.stamp
 check-generated: $(VENV)/.stamp
 	$(CODEGEN) check
 
-# The Python RPC tests need the compiled core (robogene.Bottle), hence `python`.
-test-codegen: $(VENV)/.stamp python
+# The Python RPC tests need the compiled core (robogene.Bottle), hence `python`; the end-to-end test
+# of a new IDL method links a server against the C++ runtime and registers it with `robogene server`,
+# hence `runtime`.
+test-codegen: $(VENV)/.stamp python runtime
 	$(PY) -m pytest -q -p no:cacheprovider tests/codegen
 
 # The CAN protocol and board configs (interfaces/idl/can_motor_control.yaml, head_boards.yaml): codec

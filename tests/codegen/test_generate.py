@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The generator: deterministic, fast, `check` names stale files, a new IDL method reaches code."""
 import os
+import re
 import resource
+import select
 import shutil
 import subprocess
 import sys
 import textwrap
+import time
 from pathlib import Path
-
-import pytest
 
 from robogene_codegen.__main__ import main
 from robogene_codegen.generate import OWNED_DIRS, render
@@ -184,10 +185,14 @@ def test_generated_cpp_headers_compile_cleanly(tmp_path):
     assert cc.returncode == 0, cc.stderr
 
 
-RPC_MAIN = textwrap.dedent("""
+SERVER_MAIN = textwrap.dedent("""
+    // The regenerated ControlboardServer around a board that implements the new method, on a real
+    // port registered with the name server given on the command line; serves until stdin closes.
     #include <cstdio>
-    #include "robogene/dev/generated/controlboard_client.hpp"
+    #include <iostream>
+    #include <string>
     #include "robogene/dev/generated/controlboard_server.hpp"
+    #include "robogene/rpc.hpp"
     using namespace robogene;
     using namespace robogene::dev;
     struct Board : DeviceDriver, IEncoders {
@@ -210,66 +215,141 @@ RPC_MAIN = textwrap.dedent("""
         return true;
       }
     };
-    int main() {
+    int main(int argc, char** argv) {
+      if (argc != 4) return 2;
       Board board;
       ControlboardServer server(board);
-      ControlboardClient client([&](const Bottle& req, Bottle& reply) {
-        reply = Bottle::from_bytes(server.respond(Bottle::from_bytes(req.to_bytes())).to_bytes());
-        return true;
-      });
-      double t = 0;
-      if (!client.getEncoderTemperature(2, t) || t != 22.0) return 1;
-      if (client.getEncoderTemperature(7, t)) return 2;
-      std::printf("%s\\n", server.respond(Bottle::from_text("[get] [etmp] 1")).to_text().c_str());
+      RpcServer rpc;
+      rpc.serve([&](const Bottle& request, const MessageInfo&) { return server.respond(request); });
+      rpc.open(argv[3], NameClient(net::Endpoint{argv[1], std::stoi(argv[2])}));
+      std::printf("serving %s\\n", argv[3]);
+      std::fflush(stdout);
+      std::string line;
+      while (std::getline(std::cin, line)) {
+      }
+      rpc.close();
       return 0;
     }
 """)
 
+PYTHON_CLIENT = textwrap.dedent("""
+    import sys
+    import robogene  # the installed binding: Bottle, ports, the name-server client
+    robogene.__path__.insert(0, sys.argv[1])  # robogene.dev from the regenerated tree
+    from robogene import Network, RpcClient
+    from robogene.dev.generated import clients
+    from robogene.dev.generated.clients import ControlboardClient
 
-def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path):
-    """C++ client -> bytes -> C++ server -> device, and the same in Python, for a new method."""
+    assert clients.__file__.startswith(sys.argv[1]), clients.__file__
+    with RpcClient("/newmethod/client", server="/newmethod/rpc:i", network=Network(sys.argv[2])) as port:
+        client = ControlboardClient(port.call)
+        served = dict(client.check_server())  # raises if the two sides' fingerprints differ
+        print(served["IEncoders"], client.getEncoderTemperature(2), client.getEncoderTemperature(7))
+""")
+
+
+def robogene_binary() -> Path:
+    path = Path(os.environ.get("ROBOGENE_BIN") or ROOT / "build" / "bin" / "robogene")
+    assert os.access(path, os.X_OK), f"{path} missing: build the runtime first (make runtime)"
+    return path
+
+
+def core_library() -> Path:
+    """The C++ runtime built by `make runtime`, beside the robogene binary the tests use."""
+    lib = robogene_binary().resolve().parents[1] / "runtime" / "librobogene_core.a"
+    assert lib.is_file(), f"{lib} missing: build the runtime first (make runtime)"
+    return lib
+
+
+def private_yarp_env(tmp_path: Path) -> dict:
+    env = dict(os.environ)
+    for var, sub in (("YARP_CONFIG_HOME", "config"), ("YARP_DATA_HOME", "data"),
+                     ("YARP_CACHE_HOME", "cache"), ("YARP_RUNTIME_DIR", "runtime")):
+        (tmp_path / "yarp" / sub).mkdir(parents=True, exist_ok=True)
+        env[var] = str(tmp_path / "yarp" / sub)
+    env.pop("YARP_NAMESPACE", None)
+    return env
+
+
+def first_line(proc: subprocess.Popen, pattern: str, timeout: float = 15.0) -> re.Match:
+    """The first stdout line of `proc` matching `pattern`, or a failure naming what it printed."""
+    seen = []
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
+        if not ready:
+            break
+        line = proc.stdout.readline()
+        if not line:
+            break
+        seen.append(line)
+        m = re.search(pattern, line)
+        if m:
+            return m
+    raise AssertionError(f"no line matching {pattern!r} from {proc.args[0]} (exit {proc.poll()}): {seen}")
+
+
+def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path, capsys):
+    """A method added to the IDL of a temporary tree: `check` fails until it is regenerated; then a
+    C++ server built from that tree serves it on a registered port, and the Python client generated
+    in the same tree calls it over the network through the installed binding."""
     root = make_copy(tmp_path)
     idl = root / "interfaces/idl/iencoders.yaml"
     idl.write_text(idl.read_text() + textwrap.indent(NEW_METHOD, "  "))
+    assert main(["check", "--root", str(root)]) == 1
+    err = capsys.readouterr().err
+    assert "stale: runtime/src/dev/generated/controlboard_server.cpp: differs" in err
+    assert "stale: runtime/python/robogene/dev/generated/clients.py: differs" in err
     assert main(["generate", "--root", str(root)]) == 0
+    assert main(["check", "--root", str(root)]) == 0
 
-    src = tmp_path / "rpc_main.cpp"
-    src.write_text(RPC_MAIN)
-    sources = [str(p) for p in sorted((root / "runtime/src/bottle").glob("*.cpp"))]
-    sources += [str(root / "runtime/src/dev/rpc_codec.cpp"),
-                str(root / "runtime/src/dev/generated/controlboard_server.cpp"),
-                str(root / "runtime/src/dev/generated/controlboard_client.cpp"), str(src)]
-    exe = tmp_path / "rpc_main"
+    src = tmp_path / "server_main.cpp"
+    src.write_text(SERVER_MAIN)
+    # The regenerated dispatch and the codec from the tree; ports and bottles from the built runtime.
+    sources = [str(root / "runtime/src/dev/generated/controlboard_server.cpp"),
+               str(root / "runtime/src/dev/rpc_codec.cpp"), str(src)]
+    exe = tmp_path / "server_main"
     cc = subprocess.run(["g++", "-std=c++17", "-O0", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                         "-I", str(root / "runtime/include"), *sources, "-o", str(exe)],
+                         "-I", str(root / "runtime/include"), *sources, str(core_library()),
+                         "-lsqlite3", "-pthread", "-o", str(exe), f"-Wl,-Map={tmp_path / 'server.map'}"],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
-    run = subprocess.run([str(exe)], capture_output=True, text=True)
-    assert run.returncode == 0, run.stdout + run.stderr
-    assert run.stdout.startswith("[is] [etmp] 21.0 [tsta] ")
+    # The archive's device objects were built from the old interfaces: none may be linked in.
+    linked = set(re.findall(r"librobogene_core\.a\(([^)]+)\)", (tmp_path / "server.map").read_text()))
+    assert "port.cpp.o" in linked
+    assert not linked & {f"{p.name}.o" for p in (ROOT / "runtime/src/dev").rglob("*.cpp")}, linked
 
-    pytest.importorskip("robogene._core", reason="needs the compiled core (make python)")
-    code = textwrap.dedent("""
-        import sys
-        import robogene
-        robogene.__path__.insert(0, sys.argv[1])
-        from robogene import Bottle
-        from robogene.dev.generated import IEncoders
-        from robogene.dev.generated.clients import ControlboardClient
-        from robogene.dev.rpc import RpcServer
+    env = private_yarp_env(tmp_path)
+    procs = []
+    try:
+        names = subprocess.Popen([str(robogene_binary()), "server", "--ip", "127.0.0.1", "--socket", "0",
+                                  "--db", str(tmp_path / "names.db")], stdin=subprocess.DEVNULL,
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+        procs.append(names)
+        m = first_line(names, r"listening at tcp://([\d.]+):(\d+)/")
+        host, port = m.group(1), m.group(2)
+        server = subprocess.Popen([str(exe), host, port, "/newmethod/rpc:i"], stdin=subprocess.PIPE,
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+        procs.append(server)
+        first_line(server, r"^serving /newmethod/rpc:i$")
 
-        class Board(IEncoders):
-            def getEncoderTemperature(self, j):
-                return 20.0 + j if 0 <= j < 3 else None
-        for name in IEncoders.__abstractmethods__ - {"getEncoderTemperature"}:
-            setattr(Board, name, lambda self, *a: None)
-        Board.__abstractmethods__ = frozenset()
-        server = RpcServer("controlboard", Board())
-        client = ControlboardClient(lambda req: Bottle.from_bytes(server.respond(Bottle.from_bytes(req.to_bytes())).to_bytes()))
-        assert client.getEncoderTemperature(2) == 22.0
-        assert client.getEncoderTemperature(7) is None
-        print("ok")
-    """)
-    out = subprocess.run([sys.executable, "-c", code, str(root / "runtime/python/robogene")],
-                         capture_output=True, text=True)
-    assert out.stdout.strip() == "ok", out.stderr
+        out = subprocess.run([sys.executable, "-c", PYTHON_CLIENT, str(root / "runtime/python/robogene"),
+                              f"{host}:{port}"], capture_output=True, text=True, env=env, timeout=60)
+        assert out.returncode == 0, out.stderr
+        fingerprint, near, beyond = out.stdout.split()
+        assert (near, beyond) == ("22.0", "None")
+        # The server answered with the edited IEncoders, not the committed one.
+        assert f'"{fingerprint}"' in (root / "runtime/include/robogene/dev/generated/iencoders.hpp").read_text()
+        assert f'"{fingerprint}"' not in (ROOT / "runtime/include/robogene/dev/generated/iencoders.hpp").read_text()
+
+        server.stdin.close()
+        assert server.wait(timeout=10) == 0
+    finally:
+        for p in reversed(procs):
+            if p.poll() is None:
+                p.terminate()
+                try:
+                    p.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    p.kill()
+                    p.wait()

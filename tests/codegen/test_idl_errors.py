@@ -251,6 +251,60 @@ def test_echo_past_the_request(tmp_path):
     assert err == f"{tmp_path}/i.yaml:9:11: error: echo 2 of 'getThing' is past the end of its request (2 vocabs and 0 arguments)"
 
 
+def test_stamp_applies_only_to_queries(tmp_path):
+    err = one_error(tmp_path, {"i.yaml": iface("""\
+        - name: stop
+          doc: Stop.
+          wire: [set, sto]
+          stamp: false
+        """)})
+    assert err == (f"{tmp_path}/i.yaml:9:5: error: 'stamp' concerns the reply to a query; 'stop' has no "
+                   "results, so its reply is [ok] or [fail]")
+
+
+def test_an_unstamped_query_changes_the_fingerprint_and_its_all_axes_form(tmp_path):
+    query = """\
+        - name: getThing
+          doc: Get.
+          wire: [get, thng]{stamp}
+          args:
+            - {{name: j, type: joint}}
+          results:
+            - {{name: v, type: float64}}
+          all_axes: {{name: getThings, wire: [get, thns]}}
+        """
+    (tmp_path / "i.yaml").write_text(iface(query.format(stamp="")))
+    stamped = compile_directory(tmp_path).interfaces[0]
+    (tmp_path / "i.yaml").write_text(iface(query.format(stamp="\n          stamp: false")))
+    unstamped = compile_directory(tmp_path).interfaces[0]
+    assert [m.stamp for m in stamped.methods] == [True, True]
+    assert [m.stamp for m in unstamped.methods] == [False, False]
+    assert stamped.fingerprint != unstamped.fingerprint
+
+
+def test_command_aliases_must_name_a_command_and_not_overlap(tmp_path):
+    errs = errors_of(tmp_path, {
+        "a.yaml": iface("- {name: stop, doc: Stop., wire: [set, sto]}\n"
+                        "- {name: get, doc: Get., wire: [get, thng], results: [{name: v, type: int32}]}\n",
+                        name="IA"),
+        "s.yaml": "idl: 1\nservice: board\nversion: 1\ndoc: B.\nrpc_port: rpc:i\ninterfaces: [IA]\n"
+                  "command:\n  port: command:i\n  doc: C.\n  prefix: [set]\n  aliases:\n"
+                  "    - {head: [halt], method: IA.stop}\n"
+                  "    - {head: [sto, x], method: IA.stop}\n"
+                  "    - {head: [g], method: IA.get}\n"
+                  "    - {head: [h], method: IB.stop}\n",
+    })
+    assert errs == [
+        f"{tmp_path}/s.yaml:13:14: error: command alias [sto] [x] overlaps the head [sto] of IA.stop",
+        f"{tmp_path}/s.yaml:14:27: error: command alias [g]: 'IA.get' is not a command (a method with a wire path "
+        "and no results)",
+        f"{tmp_path}/s.yaml:15:27: error: command alias [h]: 'IB.stop' is not a method of this service's interfaces",
+    ]
+    (tmp_path / "s.yaml").write_text((tmp_path / "s.yaml").read_text().split("    - {head: [sto")[0])
+    command = compile_directory(tmp_path).services[0].command
+    assert [(h, m.name) for h, m in command.aliases] == [(("halt",), "stop")]
+
+
 def test_image_cannot_travel_by_rpc(tmp_path):
     err = one_error(tmp_path, {"i.yaml": iface("""\
         - name: getImage

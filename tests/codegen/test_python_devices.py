@@ -106,10 +106,31 @@ def test_bad_requests_are_refused_and_change_nothing():
     assert ipos.positionMoveAll([1.0, 2.0, 3.0]) is False
     assert ipos.setRefSpeeds([5.0, -1.0]) is False
     assert ipos.getRefSpeed(0) == 10.0
-    assert device._device.setControlMode(0, ControlMode.TORQUE) is False
+    assert device._device.setControlMode(0, ControlMode.CURRENT) is False  # not simulated
     assert clock.advance(-1) is False
     assert device.view(IEncoders).getEncoder(5) is None
     assert device.view(IEncoders).getEncoders() == [0.0, 0.0]
+
+
+def test_torque_mode_is_a_damped_body_and_modes_hand_over():
+    """The C++ twin is TestMotor.TorqueModeIsADampedBodyAndModesHandOver."""
+    device = PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2, "clock": "manual", "inertia": 0.02,
+                                            "damping": 0.1, "max_torque": 2}))
+    motor, clock = device._device, device.view(ISimulationClock)
+    tau, deg = 0.02 / 0.1, 180.0 / math.pi
+    assert motor.setControlMode(0, ControlMode.TORQUE) and motor.getRefTorque(0) == 0.0
+    assert motor.setRefTorque(0, 1.0) and clock.advance(0.3)
+    w_end = 1.0 / 0.1 * deg
+    assert motor.getEncoderSpeed(0) == pytest.approx(w_end * (1 - math.exp(-0.3 / tau)), abs=1e-9)
+    assert motor.getEncoder(0) == pytest.approx(w_end * (0.3 - tau * (1 - math.exp(-0.3 / tau))), abs=1e-9)
+    assert motor.stop(0) and clock.advance(20 * tau) and abs(motor.getEncoderSpeed(0)) < 1e-6
+    assert motor.setRefTorque(0, -2.0) and clock.advance(0.5)
+    assert motor.setControlMode(0, ControlMode.POSITION) and clock.advance(60.0)
+    assert motor.getEncoder(0) == motor.getTargetPosition(0) and motor.getTorque(0) == 0.0
+    assert motor.setRefTorque(1, 2.5) is False
+    bad = PolyDriver()
+    assert not bad.open(Property.from_dict({"device": "test_motor", "damping": 0}))
+    assert "damping" in bad.last_error
 
 
 def test_view_of_an_unimplemented_interface_is_none():
@@ -149,6 +170,26 @@ def test_property_from_ini_command_line_and_dict():
     assert c.origin("axes") == "command line argument 3"
     n = Property.from_ini("hex 0x1F\noct 010\nnotoct 09\nneg -5\nf 1e3\n", "n.ini")
     assert [n.find(k) for k in ("hex", "oct", "notoct", "neg", "f")] == [31, 8, "09", -5, 1000.0]
+
+
+def test_property_from_a_bottle_as_the_cpp_one_reads_it():
+    from robogene import Bottle  # the compiled core
+    b = Bottle.from_text('(device test_motor) (axes 2) (pos 1 2.5) (name "/m x") (mode [vel]) (flag) '
+                         '(lim (0.0 90.5)) (GENERAL (Joints 4) (AxisName "neck" "eyes"))')
+    p = Property.from_bottle(b)
+    assert p.get_string("device", "") == "test_motor" and p.get_int("axes", 0, 1, 64) == 2
+    assert p.find("pos") == [1, 2.5] and p.get_string("name", "") == "/m x"
+    assert p.find("mode") == "vel" and p.get_bool("flag", False) is True
+    assert p.find("lim") == [0.0, 90.5]  # a list value, not a group: its first item is no key
+    general = p.find_group("GENERAL")
+    assert general.get_int("Joints", 0, 0, 9) == 4 and general.find("AxisName") == ["neck", "eyes"]
+    assert p.origin("axes") == "bottle item 1" and general.origin("Joints") == "bottle item 7 item 0"
+    with pytest.raises(ConfigError, match=r"^bottle item 1: expected \(key value\.\.\.\), got 7$"):
+        Property.from_bottle(Bottle.from_text("(axes 2) 7"))
+    device = PolyDriver()
+    assert not device.open(Property.from_bottle(Bottle.from_text("(device test_motor) (axes 100)"), "rpc"))
+    assert device.last_error == "device 'test_motor': rpc item 1: key 'axes': 100 is outside [1, 64]"
+    assert device.open(Property.from_bottle(b)) and device.view(IEncoders).getAxes() == 2
 
 
 @pytest.mark.parametrize("text,message", [
@@ -236,6 +277,15 @@ int main() {
   for (int i = 0; i < 100; ++i) { a.step(0.013); std::printf("%.17g %.17g\n", a.position(), a.velocity()); }
   a.stop();
   for (int i = 0; i < 50; ++i) { a.step(0.01); std::printf("%.17g %.17g\n", a.position(), a.velocity()); }
+  // Torque control, its release, and the hand-over to position control.
+  a.set_dynamics(0.02, 0.1); a.push(1.5);
+  for (int i = 0; i < 100; ++i) { a.step(0.007); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.stop();
+  for (int i = 0; i < 50; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.push(-0.5);
+  for (int i = 0; i < 50; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.move_to(a.position()); a.stop();
+  for (int i = 0; i < 400; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
   return 0;
 }
 """
@@ -273,4 +323,16 @@ def test_python_and_cpp_test_motor_share_one_motion_model(tmp_path):
     for _ in range(50):
         a.step(0.01)
         py.append((a.position, a.velocity))
+    a.inertia, a.damping = 0.02, 0.1
+
+    def hand_over() -> None:
+        a.move_to(a.position)
+        a.stop()
+    for command, dt, n in ((lambda: a.push(1.5), 0.007, 100), (a.stop, 0.01, 50),
+                           (lambda: a.push(-0.5), 0.01, 50), (hand_over, 0.01, 400)):
+        command()
+        for _ in range(n):
+            a.step(dt)
+            py.append((a.position, a.velocity, a.torque()))
     assert py == cpp
+    assert py[-1] == (py[-1][0], 0.0, 0.0)  # at rest under position control

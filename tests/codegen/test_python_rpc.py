@@ -3,6 +3,7 @@
 """Python RPC: the table-driven server replays a real YARP 3 `yarp rpc` session byte for byte
 (the same capture as the C++ test, rpc_motors.flows.txt), and the generated client drives a
 device through bytes and the server. Needs the compiled core (`make python`)."""
+import math
 import struct
 import time
 
@@ -10,6 +11,7 @@ import pytest
 
 from robogene import Bottle, Error
 from robogene.dev import ControlMode, IPositionControl, IVelocityControl, PolyDriver, Property
+from robogene.dev.generated import Pid, PidType
 from robogene.dev.generated.clients import ControlboardClient
 from robogene.dev.rpc import RpcServer
 
@@ -87,7 +89,10 @@ def test_server_refuses_malformed_requests():
     assert ask("[set] [pos] 9 2.0") == "[fail]"
     assert ask("[set] [poss] (1.0 2.0)") == "[fail]"
     assert ask("[set] [icmd] [cmod] 0 [bogu]") == "[fail]"
-    assert ask("[get] [torq] [trq] 0") == "[fail]"
+    assert ask("[get] [torq] [trq] 9") == "[fail]"  # no such axis
+    assert ask("[set] [torq] [ref] 0 99.0") == "[fail]"  # beyond max_torque
+    assert ask("[get] [pid] [pid] [xyz] 0") == "[fail]"  # not a PID type
+    assert ask("[set] [pid] [pid] [pos] 0 (1.0 2.0)") == "[fail]"  # 2 of a Pid's 10 fields
     assert ask("[get] [icmd] [cmod] 0").startswith("[is] 0 [pos] [tsta] ")
 
 
@@ -105,7 +110,7 @@ def test_paper_section_3_3_through_client_bytes_and_server():
     device, server = board(3)
     client = client_for(server)
     assert [name for name, _ in client.check_server()] == [
-        "IEncoders", "IPositionControl", "IVelocityControl", "IControlMode"]
+        "IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode"]
     ipos, ivel = client, client
     assert isinstance(ipos, IPositionControl) and isinstance(ivel, IVelocityControl)
     assert ipos.setRefAcceleration(0, 100) and ipos.setRefSpeed(0, 5) and ipos.positionMove(0, 40)
@@ -116,9 +121,73 @@ def test_paper_section_3_3_through_client_bytes_and_server():
     assert encs[1] == pytest.approx(0.125 + 5 * 3.95, abs=0.01)
     assert client.checkMotionDoneAll() == [False, False, True]
     assert client.getControlModes() == [ControlMode.POSITION, ControlMode.VELOCITY, ControlMode.POSITION]
-    assert client.setControlMode(2, ControlMode.TORQUE) is False
-    assert client.getTorque(0) is None  # test_motor has no ITorqueControl
+    assert client.setControlMode(2, ControlMode.PWM) is False
+    assert client.getTorque(7) is None  # no such axis
     assert client.getAxes() == 3
+
+
+def test_torque_and_pid_replies_have_yarps_shapes():
+    """As handleTorqueMsg and handlePidMsg answer: torque queries are stamped, PID queries are not
+    (and take no stamp number); a Pid is the list of its 10 fields."""
+    _, server = board()
+    ask = lambda text: server.respond(Bottle.from_text(text)).to_text()  # noqa: E731
+    assert ask("[set] [torq] [refs] (0.25 0.5 0.75 1.0)") == "[ok]"
+    assert ask("[get] [torq] [trq] 1").startswith("[is] [torq] 0.5 [tsta] ")
+    stamp = server.respond(Bottle.from_text("[get] [axes]"))[4].as_int()
+    assert ask("[set] [pid] [pid] [pos] 2 (1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0)") == "[ok]"
+    reply = server.respond(Bottle.from_text("[get] [pid] [pid] [pos] 2"))
+    assert reply.to_text() == "[is] [pid] (1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0) [ok]"
+    assert reply.to_bytes().hex() == ("0001000004000000" "0900000069730000" "0900000070696400" "0a0100000a000000"
+                                      + struct.pack("<10d", *range(1, 11)).hex() + "090000006f6b0000")
+    assert ask("[get] [pid] [outs] [trq]") == "[is] [pid] (0.25 0.5 0.75 1.0) [ok]"
+    assert ask("[get] [pid] [ref] [pos] 1") == "[fail]"  # axis 1 runs its torque loop
+    assert ask("[set] [pid] [ref] [trq] 1 0.5") == "[fail]"  # direct references: not simulated
+    assert server.respond(Bottle.from_text("[get] [axes]"))[4].as_int() == stamp + 1
+
+
+def test_torque_control_and_pids_through_client_bytes_and_server():
+    """The C++ twin is ControlboardClient.TorqueControlAndPidsSucceedThroughTheWire."""
+    device, server = board(3)
+    client = client_for(server)
+    assert client.setRefTorque(0, 0.5)
+    assert client.getControlMode(0) == ControlMode.TORQUE
+    assert device._device.advance(1.0)  # 50 time constants of J/b = 0.02 s
+    assert client.getTorque(0) == 0.5 and client.getRefTorque(0) == 0.5
+    terminal = 0.5 / 0.5 * 180.0 / math.pi  # t / b, deg/s
+    assert client.getEncoderSpeed(0) == pytest.approx(terminal, abs=1e-9)
+    assert client.getEncoder(0) == pytest.approx(terminal * (1 - 0.02), abs=1e-9)
+    assert client.getTorqueRange(2) == (-5.0, 5.0)
+    assert client.setRefTorque(1, 5.5) is False
+    assert client.setRefTorques([1.0, 2.0, -6.0]) is False  # one bad entry: nothing changes
+    assert client.getRefTorques() == [0.5, 0.0, 0.0]
+
+    assert client.setRefAcceleration(1, 100.0) and client.velocityMove(1, 10.0)
+    assert device._device.advance(1.0)
+    torque = client.getTorque(1)
+    assert torque == pytest.approx(0.5 * 10.0 * math.pi / 180.0, abs=1e-12)  # b w
+    assert client.getPidOutput(PidType.VELOCITY, 1) == torque
+    assert (client.getPidReference(PidType.VELOCITY, 1), client.getPidError(PidType.VELOCITY, 1)) == (10.0, 0.0)
+    assert client.getPidReference(PidType.TORQUE, 1) is None
+    assert client.getPidErrors(PidType.POSITION) is None  # not every axis runs it
+
+    gains = Pid(6000, 500, 5, 1333, 1333, 0, 8, 0.5, -0.5, 1)
+    assert client.setPid(PidType.POSITION, 2, gains)
+    assert client.getPid(PidType.POSITION, 2) == gains
+    assert client.getPids(PidType.POSITION) == [Pid(), Pid(), gains]
+    assert client.getPids(PidType.TORQUE) == [Pid()] * 3
+    assert client.setPid(PidType.VELOCITY, 0, Pid(ki=float("nan"))) is False
+    assert client.setPids(PidType.VELOCITY, [gains, gains]) is False
+    assert client.setPids(PidType.CURRENT, [gains, Pid(), gains])
+    assert client.getPids(PidType.CURRENT) == [gains, Pid(), gains]
+    assert client.setPidErrorLimits(PidType.POSITION, [1.0, 2.0, 3.0])
+    assert client.setPidErrorLimit(PidType.POSITION, 0, -1.0) is False
+    assert client.getPidErrorLimits(PidType.POSITION) == [1.0, 2.0, 3.0]
+
+    assert client.positionMove(2, 20.0)
+    assert client.getPidError(PidType.POSITION, 2) == 20.0
+    assert device._device.advance(10.0)
+    assert (client.getPidReference(PidType.POSITION, 2), client.getPidError(PidType.POSITION, 2)) == (20.0, 0.0)
+    assert client.setPidReference(PidType.POSITION, 2, 5.0) is False
 
 
 def test_client_refuses_a_server_built_from_other_idl():
@@ -164,6 +233,13 @@ def test_command_port_carries_streamed_moves():
     assert server.respond(Bottle.from_text("[get] [poss]")).to_text().startswith(
         "[is] [poss] (10.0 20.0 30.0 40.0)")
     for bad in ("([vmo] 9) (1.0)", "([bogus] 1) (1.0)", "([vmo] 1)", "([encs]) ()", "[vmo] 1 1.0"):
+        assert server.command(Bottle.from_text(bad)) is False, bad
+    # YARP 3.5's remote_controlboard streams torque references as [dtq] j and [dtqs] (IDL aliases).
+    assert server.command(Bottle.from_text("([dtq] 1) (0.5)"))
+    assert server.command(Bottle.from_text("([dtqs]) (0.25 0.5 0.75 1.0)"))
+    assert server.respond(Bottle.from_text("[get] [torq] [refs]")).to_text().startswith(
+        "[is] [torq] (0.25 0.5 0.75 1.0) [tsta]")
+    for bad in ("([dtq] 1) (9.0)", "([dtq]) (0.5)", "([dtqs]) (0.5 0.5)"):
         assert server.command(Bottle.from_text(bad)) is False, bad
 
 

@@ -100,3 +100,89 @@ def test_yarps_remote_controlboard_drives_robogene_dev(yarpserver, yarp, ours, p
     theirs.wait_until("joint 0 at its target", lambda: abs(encoders()[0] - 30.0) < 1e-6, 10)
     last = encoders()
     assert len(last) == 4 and last[1] > 0.0 and last[2] == last[3] == 0.0, last
+
+
+PID_POS_1 = "(6000.0 500.0 5.0 1333.0 1333.0 0.0 8.0 0.5 -0.5 1.0)"
+
+
+def pid_reply(reply: str) -> str:
+    """The value of `[is] [pid] <value> [ok]`: YARP's PID replies carry no [tsta] stamp."""
+    m = re.fullmatch(r"\[is\] \[pid\] (.+) \[ok\]", reply)
+    assert m, reply
+    return m.group(1)
+
+
+def test_our_remote_controlboard_reads_pids_and_torques_from_yarps_control_board(yarpserver, yarp, ours, procs,
+                                                                                 net):
+    yarp.fake_motors("/interop/motors", joints=2)
+    # Our remote_controlboard, served again by our controlBoard_nws_yarp as /interop/ourproxy (as the
+    # YARP side does below with yarpdev), so that requests typed at our rpc go through its client.
+    start_robogene_dev(procs, net, "--device", "controlBoard_nws_yarp", "--subdevice", "remote_controlboard",
+                       "--remote", "/interop/motors", "--local", "/interop/ours", "--name", "/interop/ourproxy")
+    mine = ours.rpc("/interop/ourproxy/rpc:i")
+    mine.send("[set] [pid] [pids] [pos] ((1.5 2 3 4 5 6 7 8 9 10) (6000 500 5 1333 1333 0 8 0.5 -0.5 1))")
+    mine.send("[get] [pid] [pid] [pos] 1")
+    mine.send("[get] [pid] [pids] [pos]")
+    mine.send("[set] [pid] [pid] [trq] 0 (1 2 3 4 5 6 7 8 9 10)")
+    mine.send("[get] [pid] [pid] [trq] 0")
+    mine.send("[get] [pid] [out] [vel] 1")  # fakeMotionControl's outputs: 1.2 + 10 j for velocity
+    mine.send("[get] [pid] [err] [trq] 0")  # and its errors: 0.4 for torque
+    mine.send("[get] [torq] [trqs]")
+    mine.send("[get] [torq] [axes]")
+    (set_pids, pid_1, pids, set_trq, trq_0, out_1, err_0, trqs, axes) = responses(mine, 9)
+    assert (set_pids, set_trq) == ("[ok]", "[ok]")
+    assert pid_reply(pid_1) == PID_POS_1
+    assert pid_reply(pids) == f"((1.5 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0) {PID_POS_1})"
+    assert pid_reply(trq_0) == "(1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0)"
+    assert float(pid_reply(out_1)) == 11.2 and float(pid_reply(err_0)) == 0.4
+    assert value_of(trqs) == "(0.0 0.0)" and value_of(axes) == "2"
+
+    # The gains reached YARP's device: read back through YARP's own rpc.
+    rpc = yarp.rpc("/interop/motors/rpc:i")
+    rpc.send("[get] [pid] [pid] [pos] 1")
+    assert pid_reply(responses(rpc, 1)[0]) == PID_POS_1
+
+
+def test_yarps_remote_controlboard_reads_pids_and_torques_from_robogene_dev(yarpserver, yarp, ours, procs, net):
+    start_robogene_dev(procs, net, "--device", "test_motor", "--axes", "2", "--name", "/interop/motors")
+    mine = ours.rpc("/interop/motors/rpc:i")
+    mine.send("[set] [pid] [pid] [pos] 1 (6000 500 5 1333 1333 0 8 0.5 -0.5 1)")
+    mine.send("[set] [torq] [ref] 0 0.5")  # axis 0 under torque control
+    assert responses(mine, 2) == ["[ok]", "[ok]"]
+    proxy = yarp.dev("--device", "remote_controlboard", "--remote", "/interop/motors", "--local", "/interop/client",
+                     "--name", "/interop/proxy")
+    proxy.wait_output(r"Port /interop/proxy/rpc:i active at ", 30)
+    net_.wait_registered(net.ns_port, "/interop/proxy/rpc:i", 15)
+
+    theirs = yarp.rpc("/interop/proxy/rpc:i")
+    theirs.send("[get] [pid] [pid] [pos] 1")
+    theirs.send("[get] [pid] [pids] [pos]")
+    theirs.send("[set] [pid] [pid] [vel] 0 (1 2 3 4 5 6 7 8 9 10)")
+    theirs.send("[get] [torq] [ref] 0")
+    pid_1, pids, set_vel, ref_0 = responses(theirs, 4)
+    assert pid_reply(pid_1) == PID_POS_1
+    assert pid_reply(pids) == f"((0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) {PID_POS_1})"
+    assert set_vel == "[ok]"
+    assert value_of(ref_0) == "0.5"
+
+    # YARP's setPid reached test_motor.
+    mine.send("[get] [pid] [pid] [vel] 0")
+    assert pid_reply(responses(mine, 3)[2]) == "(1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0)"
+
+    # YARP's client reads torques and control modes from our stateExt:o (jointData) once it has one.
+    asked = {theirs: 4, mine: 3}
+
+    def ask(proc, request):
+        proc.send(request)
+        asked[proc] += 1
+        return responses(proc, asked[proc])[-1]
+
+    theirs.wait_until("the torque in jointData", lambda: ask(theirs, "[get] [torq] [trqs]").startswith(
+        "[is] [torq] (0.5 0.0) [tsta] "), 10)
+    assert re.fullmatch(r"\[is\] 0 \[torq\] \[tsta\] \d+ \S+ \[ok\]", ask(theirs, "[get] [icmd] [cmod] 0"))
+
+    # YARP's client streams torque references ([dtq] j, [dtqs]) on command:o to our command:i.
+    assert ask(theirs, "[set] [torq] [ref] 1 0.25") == "[ok]"
+    mine.wait_until("setRefTorque(1, 0.25)", lambda: value_of(ask(mine, "[get] [torq] [ref] 1")) == "0.25", 10)
+    assert ask(theirs, "[set] [torq] [refs] (0.75 1.0)") == "[ok]"
+    mine.wait_until("setRefTorques", lambda: value_of(ask(mine, "[get] [torq] [refs]")) == "(0.75 1.0)", 10)

@@ -133,6 +133,27 @@ def test_from_ini_file_with_groups_and_subdevice(name_server, procs, robogene_bi
     assert query(name_server, "/head/rpc:i") is None
 
 
+@pytest.mark.parametrize("wrapper", ["controlBoard_nws_yarp", "controlboardwrapper2"])
+def test_subdevice_given_on_the_command_line(name_server, procs, robogene_bin, yarp_env, cli, wrapper):
+    dev = start_dev(procs, robogene_bin, yarp_env, "--device", wrapper, "--subdevice", "test_motor",
+                    "--axes", "2", "--name", "/sub")
+    reply = cli("rpc", "/sub/rpc:i", input="[get] [axes]\n[get] [rgif]\n[set] [torq] [ref] 1 0.5\n"
+                                          "[get] [icmd] [cmod] 1\n")
+    assert reply.returncode == 0, reply.stderr
+    axes, listed, torque, mode = reply.stdout.splitlines()
+    assert re.fullmatch(r"Response: \[is\] \[axes\] 2 \[tsta\] \d+ \S+ \[ok\]", axes)  # --axes reached it
+    # The wrapper serves the subdevice's interfaces: test_motor's, torque control included.
+    names = re.findall(r"\((\w+) \"?[0-9a-f]{16}\"?\)", listed)
+    assert names == ["IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl",
+                     "IControlMode"], listed
+    assert torque == "Response: [ok]"
+    assert mode.startswith("Response: [is] 1 [torq] [tsta] "), mode
+    dev.signal(signal.SIGTERM)
+    assert dev.wait_exit() == 0
+    dev.wait_for_line(rf"{wrapper} closed", stream="err")
+    assert query(name_server, "/sub/rpc:i") is None
+
+
 @pytest.mark.parametrize("args, message", [
     ((), r"no device given"),
     (("--device", "dragonfly", "--name", "/d"), r"unknown device 'dragonfly' \(known devices: .*test_motor"),
@@ -140,6 +161,14 @@ def test_from_ini_file_with_groups_and_subdevice(name_server, procs, robogene_bi
     (("--device", "test_motor", "--name", "/x", "--axes", "100"), r"axes.*100"),
     (("--device", "test_motor", "--name", "/x", "--period", "-1"), r"period"),
     (("--from", "/nonexistent/motor.ini"), r"/nonexistent/motor.ini"),
+    (("--device", "controlBoard_nws_yarp", "--subdevice", "dragonfly", "--name", "/x"),
+     r"unknown device 'dragonfly'"),
+    (("--device", "controlBoard_nws_yarp", "--subdevice", "fake_grabber", "--name", "/x"),
+     r"^robogene dev: device 'controlBoard_nws_yarp': /x: the device to serve implements none of the "
+     r"interfaces of the controlboard service$"),
+    (("--device", "frameGrabber_nws_yarp", "--subdevice", "test_motor", "--name", "/x"),
+     r"/x: the device to serve implements none of the interfaces of the grabber service"),
+    (("--device", "controlBoard_nws_yarp", "--name", "/x"), r"no 'subdevice' key naming the device to serve"),
 ])
 def test_bad_configurations_are_reported(name_server, cli, args, message):
     result = cli("dev", *args)

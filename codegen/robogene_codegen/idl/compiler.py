@@ -349,7 +349,7 @@ class _Checker:
                                         for k, v in enumerate(wire)):
             return []
         if wire is None:
-            for key in ("echo", "all_axes"):
+            for key in ("echo", "stamp", "all_axes"):
                 if key in raw:
                     self.error(doc.key_mark(path + (key,)), f"'{key}' needs a 'wire' path; "
                                f"'{raw['name']}' is local-only")
@@ -365,8 +365,13 @@ class _Checker:
         echo = self._echo(doc, path, raw.get("echo"), wire, len(args), raw["name"])
         if echo is False:
             return []
+        stamp = raw.get("stamp", True)
+        if "stamp" in raw and not results:
+            self.error(doc.key_mark(path + ("stamp",)), f"'stamp' concerns the reply to a query; "
+                       f"'{raw['name']}' has no results, so its reply is [ok] or [fail]")
+            return []
         single = Method(iface, raw["name"], raw.get("cpp_name", raw["name"]), raw["doc"], wire,
-                        echo, args, results, mark)
+                        echo, args, results, mark, stamp=stamp)
         forms = [single]
         all_raw = raw.get("all_axes")
         if all_raw is not None:
@@ -392,7 +397,7 @@ class _Checker:
             single.form, single.twin = "axis", all_raw["name"]
             forms.append(Method(iface, all_raw["name"], all_raw.get("cpp_name", all_raw["name"]),
                                 all_raw.get("doc", f"{raw['doc']} All axes at once."), awire, aecho, aargs, aresults,
-                                doc.mark(apath + ("name",)), form="all", twin=raw["name"]))
+                                doc.mark(apath + ("name",)), form="all", twin=raw["name"], stamp=stamp))
         return forms
 
     def _echo(self, doc: Document, path: tuple, echo, wire, nargs: int, name: str):
@@ -477,9 +482,39 @@ class _Checker:
                 if not routes:
                     self.error(doc.mark(("command", "prefix")), "no command of this service starts "
                                f"with {_vocab_text(prefix)}")
-                command = Command(c["port"], c["doc"], prefix, routes)
+                aliases = self._command_aliases(doc, c.get("aliases", []), members, routes)
+                command = Command(c["port"], c["doc"], prefix, routes + aliases, aliases)
         return Service(data["service"], data["version"], data["doc"], data["rpc_port"], members,
                        protocol, introspection, streams, command, doc.file, doc.mark(("service",)))
+
+    def _command_aliases(self, doc: Document, raws: list, members: list[Interface], routes: list) -> list:
+        """Other heads for commands of the service (YARP's [dtq] j for setRefTorque(j, t)): each
+        names a command (a method without results) of a member interface, and no head shadows
+        another."""
+        heads = {head: f"{m.interface}.{m.name}" for head, m in routes}
+        aliases = []
+        for k, raw in enumerate(raws):
+            mark = doc.mark(("command", "aliases", k, "method"))
+            head = tuple(raw["head"])
+            if not all(self._vocab_ok(v, doc.mark(("command", "aliases", k, "head", n))) for n, v in enumerate(head)):
+                continue
+            iname, mname = raw["method"].split(".")
+            iface = next((i for i in members if i.name == iname), None)
+            method = next((m for m in iface.methods if m.name == mname), None) if iface else None
+            if method is None:
+                self.error(mark, f"command alias {_vocab_text(head)}: '{raw['method']}' is not a method of "
+                           "this service's interfaces")
+            elif method.results or not method.wire:
+                self.error(mark, f"command alias {_vocab_text(head)}: '{raw['method']}' is not a command "
+                           "(a method with a wire path and no results)")
+            elif any(h[:len(head)] == head or head[:len(h)] == h for h in heads):
+                other = next(h for h in heads if h[:len(head)] == head or head[:len(h)] == h)
+                self.error(doc.mark(("command", "aliases", k, "head")), f"command alias {_vocab_text(head)} "
+                           f"overlaps the head {_vocab_text(other)} of {heads[other]}")
+            else:
+                heads[head] = raw["method"]
+                aliases.append((head, method))
+        return aliases
 
     def _service_collisions(self, doc: Document, members: list[Interface],
                             protocol: Optional[Protocol], introspection: Optional[tuple]) -> None:

@@ -3,7 +3,7 @@
 """Canonical forms and fingerprints.
 
 The canonical form keeps what changes the meaning or the bytes on the wire (names, types, units,
-vocab paths, echo positions, defaults, enum values, struct layouts) and drops documentation, so
+vocab paths, echo positions, reply stamps, defaults, enum values, struct layouts) and drops documentation, so
 rewording a doc string keeps a fingerprint while any wire-visible change alters it. A fingerprint
 is the first 16 hex digits of the SHA-256 of the canonical JSON.
 """
@@ -25,9 +25,12 @@ def _field(f: Field) -> dict:
 
 
 def method_shape(m: Method) -> dict:
-    return {"name": m.name, "cpp_name": m.cpp_name, "form": m.form,
-            "wire": list(m.wire) if m.wire else None, "echo": m.echo,
-            "args": [_field(a) for a in m.args], "results": [_field(r) for r in m.results]}
+    out = {"name": m.name, "cpp_name": m.cpp_name, "form": m.form,
+           "wire": list(m.wire) if m.wire else None, "echo": m.echo,
+           "args": [_field(a) for a in m.args], "results": [_field(r) for r in m.results]}
+    if not m.stamp:  # only when set, so that the fingerprints of stamped interfaces stay as they were
+        out["stamp"] = False
+    return out
 
 
 def _enum(e: EnumType) -> dict:
@@ -64,6 +67,8 @@ def assign_service(service: Service) -> None:
         "streams": [{"name": s.name, "port": s.port, "source": f"{s.interface}.{s.method.name}",
                      "period": s.period} for s in service.streams],
         "command": None if service.command is None else {
-            "port": service.command.port, "prefix": list(service.command.prefix)},
+            "port": service.command.port, "prefix": list(service.command.prefix),
+            **({"aliases": [[list(h), f"{m.interface}.{m.name}"] for h, m in service.command.aliases]}
+               if service.command.aliases else {})},
     }
     service.canonical, service.fingerprint = _digest(canonical)

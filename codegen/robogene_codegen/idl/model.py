@@ -96,6 +96,7 @@ class Method:
     mark: Mark
     form: str = "single"   # "single", "axis" (has an all-axes twin) or "all"
     twin: Optional[str] = None  # name of the other form
+    stamp: bool = True     # a query's reply carries [tsta] <n> <t> (YARP's appendTimeStamp)
 
     @property
     def reply(self) -> str:
@@ -144,7 +145,12 @@ class Command:
     port: str
     doc: str
     prefix: tuple
-    routes: list  # [(path after the prefix, Method)], commands only
+    routes: list  # [(head path, Method)]: the path after the prefix, or an alias's head
+    aliases: list = None  # [(head path, Method)]: heads that are not a path of the service
+
+    @property
+    def alias_heads(self) -> list:
+        return [head for head, _ in self.aliases or []]
 
 
 @dataclass

@@ -207,7 +207,7 @@ TEST(TestMotor, BadRequestsAreRefusedAndChangeNothing) {
   EXPECT_FALSE(m.ipos->setRefSpeeds({5, -1}));  // second is bad: the first must not apply
   ASSERT_TRUE(m.ipos->getRefSpeed(0, v));
   EXPECT_EQ(v, 10.0);  // the configured default
-  EXPECT_FALSE(m.imode->setControlMode(0, ControlMode::torque));  // not simulated
+  EXPECT_FALSE(m.imode->setControlMode(0, ControlMode::current));  // not simulated
   EXPECT_FALSE(m.clock->advance(-1));
   ASSERT_TRUE(m.clock->advance(1));
   EXPECT_EQ(m.enc(0), 0.0);
@@ -234,4 +234,55 @@ TEST(TestMotor, ControlModesIdleAndEncoderResets) {
   EXPECT_EQ(m.enc(0), 0.0);
   ASSERT_TRUE(m.clock->advance(1));
   EXPECT_EQ(m.enc(0), 0.0);  // holding: the reset moved the target along
+}
+
+// Torque control: the axis is a damped rigid body, J dw/dt = t - b w (positions in degrees).
+TEST(TestMotor, TorqueModeIsADampedBodyAndModesHandOver) {
+  PolyDriver device(Property::from_command_line({"--device", "test_motor", "--axes", "2", "--clock", "manual",
+                                                 "--inertia", "0.02", "--damping", "0.1", "--max_torque", "2"}));
+  ITorqueControl* itrq = nullptr;
+  IControlMode* imode = nullptr;
+  IEncoders* ienc = nullptr;
+  ISimulationClock* clock = nullptr;
+  ASSERT_TRUE(device.view(itrq) && device.view(imode) && device.view(ienc) && device.view(clock));
+  const double deg = 180.0 / M_PI;
+  const double tau = 0.02 / 0.1;  // J / b, seconds
+
+  ASSERT_TRUE(imode->setControlMode(0, ControlMode::torque));
+  double ref = 1;
+  ASSERT_TRUE(itrq->getRefTorque(0, ref));
+  EXPECT_EQ(ref, 0.0);  // entering torque mode exerts nothing until asked
+  ASSERT_TRUE(itrq->setRefTorque(0, 1.0));
+  ASSERT_TRUE(clock->advance(0.3));
+  double w = 0, x = 0, acc = 0;
+  ASSERT_TRUE(ienc->getEncoderSpeed(0, w) && ienc->getEncoder(0, x) && ienc->getEncoderAcceleration(0, acc));
+  const double w_end = 1.0 / 0.1 * deg;
+  EXPECT_NEAR(w, w_end * (1 - std::exp(-0.3 / tau)), 1e-9);
+  EXPECT_NEAR(x, w_end * (0.3 - tau * (1 - std::exp(-0.3 / tau))), 1e-9);
+  EXPECT_NEAR(acc, (1.0 - 0.1 * w / deg) / 0.02 * deg, 1e-9);  // (t - b w) / J
+
+  // stop() takes the torque away: damping brings the axis to rest.
+  IPositionControl* ipos = nullptr;
+  ASSERT_TRUE(device.view(ipos));
+  ASSERT_TRUE(ipos->stop(0));
+  ASSERT_TRUE(clock->advance(20 * tau));
+  ASSERT_TRUE(ienc->getEncoderSpeed(0, w));
+  EXPECT_LT(std::fabs(w), 1e-6);
+
+  // Back to position mode: the axis holds where it is.
+  ASSERT_TRUE(itrq->setRefTorque(0, -2.0));
+  ASSERT_TRUE(clock->advance(0.5));
+  ASSERT_TRUE(imode->setControlMode(0, ControlMode::position));
+  ASSERT_TRUE(clock->advance(60.0));
+  double target = 0;
+  ASSERT_TRUE(ipos->getTargetPosition(0, target) && ienc->getEncoder(0, x));
+  EXPECT_EQ(x, target);
+  double t = 1;
+  ASSERT_TRUE(itrq->getTorque(0, t));
+  EXPECT_EQ(t, 0.0);  // at rest, position control needs no torque
+  EXPECT_FALSE(itrq->setRefTorque(1, 2.5));  // beyond max_torque
+
+  PolyDriver bad;
+  EXPECT_FALSE(bad.open(Property::from_command_line({"--device", "test_motor", "--damping", "0"})));
+  EXPECT_NE(bad.last_error().find("damping"), std::string::npos) << bad.last_error();
 }

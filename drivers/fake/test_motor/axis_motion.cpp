@@ -8,6 +8,7 @@
 namespace robogene::dev {
 namespace {
 constexpr double kMaxStep = 1e-3;  // seconds
+constexpr double kDegPerRad = 57.29577951308232;  // 180 / pi
 }  // namespace
 
 void AxisMotion::step(double dt) {
@@ -18,8 +19,23 @@ void AxisMotion::step(double dt) {
   }
 }
 
+void AxisMotion::torque_substep(double h) {
+  // J dw/dt = t - b w has w(h) = w_end + (w0 - w_end) e^(-h b/J), w_end = t / b; positions in degrees.
+  const double k = damping_ / inertia_;
+  const double w_end = kDegPerRad * ref_torque_ / damping_;
+  const double decay = std::exp(-k * h);
+  const double w0 = velocity_;
+  velocity_ = w_end + (w0 - w_end) * decay;
+  position_ += w_end * h + (w0 - w_end) * (1.0 - decay) / k;
+  acceleration_ = kDegPerRad * ref_torque_ / inertia_ - k * velocity_;
+}
+
 void AxisMotion::substep(double h) {
   if (goal_ == Goal::Idle) return;
+  if (goal_ == Goal::Torque) {
+    torque_substep(h);
+    return;
+  }
   const double a = ref_acceleration_;
   double wanted = ref_velocity_;
   const double error = target_ - position_;
@@ -60,7 +76,14 @@ void AxisMotion::stop() {
     target_ = position_ + velocity_ * std::fabs(velocity_) / (2.0 * ref_acceleration_);
   } else if (goal_ == Goal::Velocity) {
     ref_velocity_ = 0.0;
+  } else if (goal_ == Goal::Torque) {
+    ref_torque_ = 0.0;  // the damping brings the axis to rest
   }
+}
+
+double AxisMotion::torque() const {
+  if (goal_ == Goal::Torque) return ref_torque_;
+  return (inertia_ * acceleration_ + damping_ * velocity_) / kDegPerRad;
 }
 
 void AxisMotion::set_position(double p) {

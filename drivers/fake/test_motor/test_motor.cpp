@@ -20,13 +20,19 @@ bool TestMotor::open(const Searchable& config) {
   const int n = config.get_int("axes", 4, 1, 64);
   const double speed = config.get_float("ref_speed", 10.0, 1e-9, 1e9);
   const double acc = config.get_float("ref_acceleration", 50.0, 1e-9, 1e9);
+  const double max_torque = config.get_float("max_torque", 5.0, 1e-9, 1e9);
+  const double inertia = config.get_float("inertia", 0.01, 1e-9, 1e9);
+  const double damping = config.get_float("damping", 0.5, 1e-9, 1e9);
   clock_.configure(config);
   axes_.assign(static_cast<std::size_t>(n), AxisMotion{});
   for (auto& axis : axes_) {
     axis.set_ref_speed(speed);
     axis.set_ref_acceleration(acc);
+    axis.set_dynamics(inertia, damping);
   }
+  max_torque_ = max_torque;
   modes_.assign(static_cast<std::size_t>(n), ControlMode::position);
+  pids_.assign(static_cast<std::size_t>(n), AxisPids{});
   last_ = clock_.now();
   open_ = true;
   return true;
@@ -37,6 +43,7 @@ bool TestMotor::close() {
   open_ = false;
   axes_.clear();
   modes_.clear();
+  pids_.clear();
   return true;
 }
 
@@ -58,40 +65,6 @@ bool TestMotor::advance(double seconds) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!open_ || !clock_.advance(seconds)) return false;
   catch_up();
-  return true;
-}
-
-template <class F>
-bool TestMotor::on_axis(int j, F&& f) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!open_ || j < 0 || static_cast<std::size_t>(j) >= axes_.size()) return false;
-  catch_up();
-  return f(axes_[static_cast<std::size_t>(j)], static_cast<std::size_t>(j));
-}
-
-template <class T, class F>
-bool TestMotor::on_all(const std::vector<T>& values, F&& f) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!open_ || values.size() != axes_.size()) return false;
-  catch_up();
-  // Check every value before changing anything, so a bad entry leaves all axes as they were.
-  std::vector<AxisMotion> trial = axes_;
-  std::vector<ControlMode> trial_modes = modes_;
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
-    if (!f(trial[i], trial_modes[i], values[i])) return false;
-  }
-  axes_ = std::move(trial);
-  modes_ = std::move(trial_modes);
-  return true;
-}
-
-template <class T, class F>
-bool TestMotor::read_all(std::vector<T>& out, F&& f) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!open_) return false;
-  catch_up();
-  out.clear();
-  for (std::size_t i = 0; i < axes_.size(); ++i) out.push_back(f(axes_[i], i));
   return true;
 }
 
@@ -323,17 +296,24 @@ bool TestMotor::getRefVelocities(std::vector<double>& vels) {
 
 namespace {
 
-// Applies a mode to one axis; test_motor simulates idle, position and velocity only.
+// Applies a mode to one axis; test_motor simulates idle, position, velocity and torque.
 bool apply_mode(AxisMotion& a, ControlMode& current, ControlMode mode) {
   switch (mode) {
     case ControlMode::idle:
       a.idle();
       break;
     case ControlMode::position:
-      if (current != ControlMode::position) a.move_to(a.position());  // hold where it is
+      if (current != ControlMode::position) {
+        // Brake at the reference acceleration and hold where the axis comes to rest.
+        a.move_to(a.position());
+        a.stop();
+      }
       break;
     case ControlMode::velocity:
       if (current != ControlMode::velocity) a.move_at(0.0);
+      break;
+    case ControlMode::torque:
+      if (current != ControlMode::torque) a.push(0.0);  // no torque until one is asked for
       break;
     default:
       return false;
@@ -365,7 +345,8 @@ bool TestMotor::setControlModes(const std::vector<ControlMode>& modes) {
   });
 }
 
-ROBOGENE_REGISTER_DRIVER(test_motor, "simulated control board: position and velocity moves, encoders",
+ROBOGENE_REGISTER_DRIVER(test_motor,
+                         "simulated control board: position, velocity and torque control, encoders, PID gains",
                          TestMotor);
 
 }  // namespace robogene::dev

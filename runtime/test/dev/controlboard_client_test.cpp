@@ -5,7 +5,9 @@
 // request and reply is encoded to bytes and decoded again, as a port would carry them.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 
 #include "robogene/dev/generated/controlboard_client.hpp"
 #include "robogene/dev/generated/controlboard_server.hpp"
@@ -47,7 +49,7 @@ struct Remote {
 TEST(ControlboardClient, PaperSection33ThroughTheNetworkWrappers) {
   Remote remote;
   const auto listed = remote.client->check_server();
-  ASSERT_EQ(listed.size(), 4u);  // test_motor: encoders, position, velocity, control mode
+  ASSERT_EQ(listed.size(), 6u);  // test_motor: encoders, position, velocity, torque, PID, control mode
   EXPECT_EQ(listed[1].first, "IPositionControl");
 
   IPositionControl* ipos = remote.client.get();
@@ -87,13 +89,98 @@ TEST(ControlboardClient, EnumsVectorsAndRefusals) {
   ControlMode one{};
   ASSERT_TRUE(imode->getControlMode(1, one));
   EXPECT_EQ(one, ControlMode::velocity);
-  EXPECT_FALSE(imode->setControlMode(0, ControlMode::torque));  // the device refuses
+  EXPECT_FALSE(imode->setControlMode(0, ControlMode::pwm));    // the device refuses
   IPositionControl* ipos = remote.client.get();
   EXPECT_FALSE(ipos->positionMove(7, 1.0));                    // no such axis
   EXPECT_FALSE(ipos->setRefSpeeds({1.0, 2.0}));                 // 2 values for 3 axes
   ITorqueControl* itrq = remote.client.get();
   double t = 0;
-  EXPECT_FALSE(itrq->getTorque(0, t));                          // test_motor has no torque
+  EXPECT_FALSE(itrq->getTorque(7, t));                          // no such axis
+}
+
+// Torque control and the PID store through client, bytes and server to test_motor (3 axes,
+// inertia 0.01 kg m^2, damping 0.5 N m s/rad, torques within +-5 N m).
+TEST(ControlboardClient, TorqueControlAndPidsSucceedThroughTheWire) {
+  Remote remote;
+  ITorqueControl* itrq = remote.client.get();
+  IPidControl* ipid = remote.client.get();
+  IControlMode* imode = remote.client.get();
+  IEncoders* ienc = remote.client.get();
+  IVelocityControl* ivel = remote.client.get();
+
+  ASSERT_TRUE(itrq->setRefTorque(0, 0.5));
+  ControlMode mode{};
+  ASSERT_TRUE(imode->getControlMode(0, mode));
+  EXPECT_EQ(mode, ControlMode::torque);
+  ASSERT_TRUE(remote.clock->advance(1.0));  // 50 time constants of J/b = 0.02 s
+  double t = 0, ref = 0, speed = 0, pos = 0;
+  ASSERT_TRUE(itrq->getTorque(0, t) && itrq->getRefTorque(0, ref));
+  EXPECT_EQ(t, 0.5);
+  EXPECT_EQ(ref, 0.5);
+  const double terminal = 0.5 / 0.5 * 180.0 / M_PI;  // t / b, in deg/s
+  ASSERT_TRUE(ienc->getEncoderSpeed(0, speed) && ienc->getEncoder(0, pos));
+  EXPECT_NEAR(speed, terminal, 1e-9);
+  EXPECT_NEAR(pos, terminal * (1.0 - 0.02), 1e-9);  // w_end (t - J/b) once the lag has decayed
+  double lo = 0, hi = 0;
+  ASSERT_TRUE(itrq->getTorqueRange(2, lo, hi));
+  EXPECT_EQ(std::make_pair(lo, hi), std::make_pair(-5.0, 5.0));
+  EXPECT_FALSE(itrq->setRefTorque(1, 5.5));  // beyond the range
+  EXPECT_FALSE(itrq->setRefTorques({1.0, 2.0, -6.0}));  // one bad entry: nothing changes
+  std::vector<double> refs;
+  ASSERT_TRUE(itrq->getRefTorques(refs));
+  EXPECT_EQ(refs, (std::vector<double>{0.5, 0.0, 0.0}));
+
+  // An axis moving at a constant velocity needs b w to overcome the damping.
+  ASSERT_TRUE(ivel->setRefAcceleration(1, 100.0));
+  ASSERT_TRUE(ivel->velocityMove(1, 10.0));
+  ASSERT_TRUE(remote.clock->advance(1.0));
+  ASSERT_TRUE(itrq->getTorque(1, t));
+  EXPECT_NEAR(t, 0.5 * 10.0 * M_PI / 180.0, 1e-12);
+  double out = 0;
+  ASSERT_TRUE(ipid->getPidOutput(PidType::velocity, 1, out));
+  EXPECT_EQ(out, t);
+  double err = 1;
+  ASSERT_TRUE(ipid->getPidReference(PidType::velocity, 1, ref) && ipid->getPidError(PidType::velocity, 1, err));
+  EXPECT_EQ(ref, 10.0);
+  EXPECT_EQ(err, 0.0);
+  EXPECT_FALSE(ipid->getPidReference(PidType::torque, 1, ref));  // axis 1 runs its velocity loop
+  std::vector<double> errs;
+  EXPECT_FALSE(ipid->getPidErrors(PidType::position, errs));  // not every axis runs it
+
+  // Gains: one Pid per axis and type, kept as given; a non-finite field is refused.
+  const Pid gains{6000, 500, 5, 1333, 1333, 0, 8, 0.5, -0.5, 1};
+  ASSERT_TRUE(ipid->setPid(PidType::position, 2, gains));
+  Pid back;
+  ASSERT_TRUE(ipid->getPid(PidType::position, 2, back));
+  EXPECT_EQ(back, gains);
+  std::vector<Pid> all;
+  ASSERT_TRUE(ipid->getPids(PidType::position, all));
+  EXPECT_EQ(all, (std::vector<Pid>{Pid{}, Pid{}, gains}));
+  ASSERT_TRUE(ipid->getPids(PidType::torque, all));
+  EXPECT_EQ(all, (std::vector<Pid>(3, Pid{})));
+  Pid bad = gains;
+  bad.ki = NAN;
+  EXPECT_FALSE(ipid->setPid(PidType::velocity, 0, bad));
+  EXPECT_FALSE(ipid->setPids(PidType::velocity, {gains, gains}));  // 2 for 3 axes
+  ASSERT_TRUE(ipid->setPids(PidType::current, {gains, Pid{}, gains}));
+  ASSERT_TRUE(ipid->getPids(PidType::current, all));
+  EXPECT_EQ(all, (std::vector<Pid>{gains, Pid{}, gains}));
+  ASSERT_TRUE(ipid->setPidErrorLimits(PidType::position, {1.0, 2.0, 3.0}));
+  EXPECT_FALSE(ipid->setPidErrorLimit(PidType::position, 0, -1.0));
+  std::vector<double> limits;
+  ASSERT_TRUE(ipid->getPidErrorLimits(PidType::position, limits));
+  EXPECT_EQ(limits, (std::vector<double>{1.0, 2.0, 3.0}));
+
+  // The position loop of axis 2 follows its target; its error is the distance left.
+  IPositionControl* ipos = remote.client.get();
+  ASSERT_TRUE(ipos->positionMove(2, 20.0));
+  ASSERT_TRUE(ipid->getPidError(PidType::position, 2, err));
+  EXPECT_EQ(err, 20.0);
+  ASSERT_TRUE(remote.clock->advance(10.0));
+  ASSERT_TRUE(ipid->getPidReference(PidType::position, 2, ref) && ipid->getPidError(PidType::position, 2, err));
+  EXPECT_EQ(ref, 20.0);
+  EXPECT_EQ(err, 0.0);
+  EXPECT_FALSE(ipid->setPidReference(PidType::position, 2, 5.0));  // not simulated
 }
 
 TEST(ControlboardClient, FingerprintMismatchIsRefusedWithAClearError) {

@@ -191,13 +191,66 @@ TEST(ControlboardServer, MalformedRequestsFailWithoutTouchingTheDevice) {
   EXPECT_EQ(board.ask("[set] [poss] (1.0 two 3.0 4.0)"), "[fail]"); // not numbers
   EXPECT_EQ(board.ask("[set] [poss] 1.0"), "[fail]");               // not a list
   EXPECT_EQ(board.ask("[set] [icmd] [cmod] 0 [bogu]"), "[fail]");   // not a control mode
-  EXPECT_EQ(board.ask("[set] [icmd] [cmod] 0 [torq]"), "[fail]");   // a mode test_motor lacks
-  EXPECT_EQ(board.ask("[get] [torq] [trq] 0"), "[fail]");           // no ITorqueControl
-  EXPECT_EQ(board.ask("[get] [pid] [pid] [pos] 0"), "[fail]");      // no IPidControl
+  EXPECT_EQ(board.ask("[set] [icmd] [cmod] 0 [icur]"), "[fail]");   // a mode test_motor lacks
+  EXPECT_EQ(board.ask("[get] [torq] [trq] 9"), "[fail]");           // no such axis
+  EXPECT_EQ(board.ask("[set] [torq] [ref] 0 99.0"), "[fail]");      // beyond max_torque
+  EXPECT_EQ(board.ask("[get] [pid] [pid] [xyz] 0"), "[fail]");      // not a PID type
+  EXPECT_EQ(board.ask("[set] [pid] [pid] [pos] 0 (1.0 2.0)"), "[fail]");  // 2 of a Pid's 10 fields
+  EXPECT_EQ(board.ask("[get] [pid] [ref] [cur] 0"), "[fail]");      // test_motor has no current loop
   EXPECT_EQ(board.ask("(nested list) 1"), "[fail]");
   EXPECT_EQ(board.ask(""), "[nak]");
   EXPECT_EQ(board.ask("[get] [encs]").substr(0, 33), "[is] [encs] (0.0 0.0 0.0 0.0) [ts");
   EXPECT_EQ(board.ask("[get] [poss]").substr(0, 33), "[is] [poss] (0.0 0.0 0.0 0.0) [ts");
+}
+
+// Torque and PID requests in the shapes of YARP 3's RPCMessagesParser (handleTorqueMsg,
+// handlePidMsg): torque queries echo [torq] and are stamped; PID queries echo [pid], carry the
+// Pid as a list of its 10 fields in YARP's order, and have no stamp, nor do they take a number.
+TEST(ControlboardServer, TorqueAndPidRequestsSucceedInYarpsShapes) {
+  Board board;
+  auto stamp_of = [&](const char* request) {
+    const Bottle reply = board.server->respond(Bottle::from_text(request));
+    EXPECT_EQ(reply[reply.size() - 4].to_text(), "[tsta]") << reply.to_text();
+    return reply[reply.size() - 3].as_int64();
+  };
+  EXPECT_EQ(board.ask("[set] [torq] [ref] 1 0.5"), "[ok]");
+  EXPECT_EQ(board.ask("[get] [icmd] [cmod] 1").substr(0, 20), "[is] 1 [torq] [tsta]");
+  EXPECT_EQ(board.ask("[get] [torq] [ref] 1").substr(0, 23), "[is] [torq] 0.5 [tsta] ");
+  EXPECT_EQ(board.ask("[get] [torq] [trqs]").substr(0, 37), "[is] [torq] (0.0 0.5 0.0 0.0) [tsta] ");
+  EXPECT_EQ(board.ask("[get] [torq] [rng] 1").substr(0, 28), "[is] [torq] -5.0 5.0 [tsta] ");
+  EXPECT_EQ(board.ask("[set] [torq] [refs] (0.25 0.5 0.75 1.0)"), "[ok]");
+  EXPECT_EQ(board.ask("[get] [torq] [refs]").substr(0, 39), "[is] [torq] (0.25 0.5 0.75 1.0) [tsta] ");
+
+  const std::int64_t before = stamp_of("[get] [axes]");
+  EXPECT_EQ(board.ask("[set] [pid] [pid] [pos] 2 (1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0)"), "[ok]");
+  const Bottle pid = board.server->respond(Bottle::from_text("[get] [pid] [pid] [pos] 2"));
+  EXPECT_EQ(pid.to_text(), "[is] [pid] (1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0) [ok]");
+  // Four items; the Pid is a homogeneous float64 list (0x10a), as YARP writes a list of doubles.
+  std::string fields;
+  for (int k = 1; k <= 10; ++k) {
+    const double v = k;
+    std::vector<std::uint8_t> b(8);
+    std::memcpy(b.data(), &v, 8);
+    fields += hex(b);
+  }
+  EXPECT_EQ(hex(pid.to_bytes()), "0001000004000000" "0900000069730000" "0900000070696400"
+                                 "0a0100000a000000" + fields + "090000006f6b0000");
+  EXPECT_EQ(board.ask("[get] [pid] [pid] [vel] 2"),
+            "[is] [pid] (0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) [ok]");  // one Pid per type
+  EXPECT_EQ(board.ask("[set] [pid] [pids] [trq] ((1 0 0 0 0 0 0 0 0 0) (2 0 0 0 0 0 0 0 0 0) "
+                      "(3 0 0 0 0 0 0 0 0 0) (4 0 0 0 0 0 0 0 0 5))"),
+            "[ok]");
+  EXPECT_EQ(board.ask("[get] [pid] [pids] [trq]"),
+            "[is] [pid] ((1.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) (2.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) "
+            "(3.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) (4.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 5.0)) [ok]");
+  EXPECT_EQ(board.ask("[set] [pid] [lim] [pos] 0 2.5"), "[ok]");
+  EXPECT_EQ(board.ask("[get] [pid] [lim] [pos] 0"), "[is] [pid] 2.5 [ok]");
+  EXPECT_EQ(board.ask("[get] [pid] [ref] [trq] 1"), "[is] [pid] 0.5 [ok]");  // axis 1 runs its torque loop
+  EXPECT_EQ(board.ask("[get] [pid] [err] [trq] 1"), "[is] [pid] 0.0 [ok]");
+  EXPECT_EQ(board.ask("[get] [pid] [outs] [trq]"), "[is] [pid] (0.25 0.5 0.75 1.0) [ok]");
+  EXPECT_EQ(board.ask("[get] [pid] [ref] [pos] 1"), "[fail]");  // ... not its position loop
+  EXPECT_EQ(board.ask("[set] [pid] [ref] [trq] 1 0.3"), "[fail]");  // direct references: not simulated
+  EXPECT_EQ(stamp_of("[get] [axes]"), before + 1);  // PID queries took no number
 }
 
 TEST(ControlboardServer, IntrospectionListsImplementedInterfacesWithFingerprints) {
@@ -209,6 +262,8 @@ TEST(ControlboardServer, IntrospectionListsImplementedInterfacesWithFingerprints
   const std::string expected = "[is] [rgif] (" + entry("IEncoders", IEncoders::kFingerprint) + " " +
                                entry("IPositionControl", IPositionControl::kFingerprint) + " " +
                                entry("IVelocityControl", IVelocityControl::kFingerprint) + " " +
+                               entry("ITorqueControl", ITorqueControl::kFingerprint) + " " +
+                               entry("IPidControl", IPidControl::kFingerprint) + " " +
                                entry("IControlMode", IControlMode::kFingerprint) + ") [tsta] 0 ";
   EXPECT_EQ(reply.substr(0, expected.size()), expected);
   EXPECT_EQ(reply.substr(reply.size() - 5), " [ok]");
@@ -279,4 +334,19 @@ TEST(ControlboardServer, CommandPortCarriesStreamedMoves) {
   EXPECT_FALSE(board.server->command(Bottle::from_text("([vmo] 1) (1.0 2.0)")));  // too many
   EXPECT_FALSE(board.server->command(Bottle::from_text("([encs]) ()")));         // a query
   EXPECT_FALSE(board.server->command(Bottle::from_text("[vmo] 1 1.0")));         // not a pair
+}
+
+// YARP 3.5's remote_controlboard streams torque references with heads of their own
+// (RemoteControlBoard::setRefTorque/setRefTorques): the IDL's command aliases [dtq] and [dtqs].
+TEST(ControlboardServer, CommandPortTakesYarpsTorqueHeads) {
+  Board board;
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([dtq] 1) (0.5)")));
+  EXPECT_EQ(board.ask("[get] [torq] [ref] 1").substr(0, 23), "[is] [torq] 0.5 [tsta] ");
+  EXPECT_EQ(board.ask("[get] [icmd] [cmod] 1").substr(0, 13), "[is] 1 [torq]");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([dtqs]) (0.25 0.5 0.75 1.0)")));
+  EXPECT_EQ(board.ask("[get] [torq] [refs]").substr(0, 39), "[is] [torq] (0.25 0.5 0.75 1.0) [tsta] ");
+  EXPECT_TRUE(board.server->command(Bottle::from_text("([torq] [ref] 0) (1.5)")));  // the [set] path works too
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtq] 1) (9.0)")));     // beyond max_torque
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtq]) (0.5)")));       // no joint
+  EXPECT_FALSE(board.server->command(Bottle::from_text("([dtqs]) (0.5 0.5)")));  // 2 values for 4 axes
 }

@@ -48,8 +48,8 @@ TEST(JointData, LayoutMatchesYarpsAndFieldsTestMotorLacksAreInvalid) {
   Bottle message;
   ASSERT_TRUE(encode_joint_data(*driver, message));
   ASSERT_EQ(message.size(), 22u);
-  // The capture with test_motor's differences: no motor encoders, torque, PWM, current or
-  // interaction mode, so those are zeros flagged [fail] (09000000 6661696c).
+  // The capture with test_motor's differences: no motor encoders, PWM, current or interaction
+  // mode, so those are zeros flagged [fail] (09000000 6661696c); its torques are zero, at rest.
   std::string expected = kCaptured;
   auto replace_field = [&](std::size_t field, const std::string& values) {
     // Each float64 field is 8 + 32 bytes of vector then 8 bytes of flag; find it by walking.
@@ -72,13 +72,13 @@ TEST(JointData, LayoutMatchesYarpsAndFieldsTestMotorLacksAreInvalid) {
     }
     expected = hex(edited.to_bytes());
   };
-  for (std::size_t field : {3u, 4u, 5u, 6u, 7u, 8u}) replace_field(field, "(0.0 0.0 0.0 0.0)");
+  for (std::size_t field : {3u, 4u, 5u, 7u, 8u}) replace_field(field, "(0.0 0.0 0.0 0.0)");
   replace_field(10, "(0 0 0 0)");
   EXPECT_EQ(hex(message.to_bytes()), expected);
   EXPECT_EQ(message.to_text(),
             "(1.0 2.0 3.0 4.0) [ok] (0.0 0.0 0.0 0.0) [ok] (0.0 0.0 0.0 0.0) [ok] "
             "(0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "
-            "(0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "
+            "(0.0 0.0 0.0 0.0) [ok] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "
             "(7565168 7565168 7565168 7565168) [ok] (0 0 0 0) [fail]");
 }
 

@@ -81,8 +81,8 @@ def call_args(m: Method) -> str:
 
 def route_init(r: Route) -> str:
     path = ", ".join(f'vocab("{v}")' for v in r.wire)
-    value = "true" if r.method.results else "false"
-    return f"{{{{{path}}}, {len(r.wire)}, {value}, &{r.handler}}}"
+    stamped = "true" if r.method.results and r.method.stamp else "false"
+    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, &{r.handler}}}"
 
 
 def command_routes(service: Service) -> list:
@@ -122,8 +122,8 @@ def emit(idl: Idl) -> dict[str, str]:
         files = sorted({s.file} | {i.file for i in s.interfaces} |
                        {t.mark.file for i in s.interfaces for t in list(i.enums) + list(i.structs)})
         header = line_comment_header("//", "BSD-3-Clause", files)
-        max_path = max([len(r.wire) for r in routes(s)] + [len(s.protocol.wire) if s.protocol else 1,
-                                                            len(s.introspection or ())])
+        max_path = max([len(r.wire) for r in routes(s)] + [len(h) for h, _ in command_routes(s)] +
+                       [len(s.protocol.wire) if s.protocol else 1, len(s.introspection or ())])
         ctx = dict(header=header, s=s, max_path=max_path, **helpers)
         out[f"{INCLUDE_DIR}/{s.name}_server.hpp"] = env.get_template("server.hpp.j2").render(**ctx)
         out[f"{SOURCE_DIR}/{s.name}_server.cpp"] = env.get_template("server.cpp.j2").render(**ctx)

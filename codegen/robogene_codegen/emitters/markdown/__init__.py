@@ -32,7 +32,8 @@ def reply_text(m: Method) -> str:
         return "`[ok]` / `[fail]`"
     values = " ".join(f"({param_name(r)}…)" if r.per_axis else f"<{param_name(r)}>" for r in m.results)
     echo = f"[{m.echo}]" if isinstance(m.echo, str) else f"<request[{m.echo}]>"
-    return f"`[is] {echo} {values} [tsta] <n> <t> [ok]` / `[fail]`"
+    stamp = " [tsta] <n> <t>" if m.stamp else ""
+    return f"`[is] {echo} {values}{stamp} [ok]` / `[fail]`"
 
 
 def cell(text: str) -> str:

@@ -1,8 +1,9 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """Property: the configuration a device's open() receives, from .ini files (with [groups]),
-`--key value` command lines (`--group::key` inside a group) or dicts. Every entry remembers where
-it came from, so a bad value is reported as "motor.ini:12: key 'axes': ..."."""
+`--key value` command lines (`--group::key` inside a group), bottles of (key value...) lists or
+dicts. Every entry remembers where it came from, so a bad value is reported as
+"motor.ini:12: key 'axes': ..."."""
 from __future__ import annotations
 
 import math
@@ -77,6 +78,32 @@ def _strip_comment(line: str) -> str:
     return line
 
 
+def _is_key(v: Any) -> bool:
+    return v.is_string() or v.is_vocab()
+
+
+def _key_text(v: Any) -> str:
+    return v.as_string() if v.is_string() else v.as_vocab_text()
+
+
+def _python_value(v: Any) -> Any:
+    """A bottle value as the ini and command-line readers give it."""
+    if v.is_list():
+        inner = v.as_list()
+        return [_python_value(inner[k]) for k in range(len(inner))]
+    if v.is_int():
+        return v.as_int()
+    if v.is_float():
+        return v.as_float()
+    if v.is_string():
+        return v.as_string()
+    if v.is_vocab():
+        return v.as_vocab_text()
+    if v.is_blob():
+        return v.as_bytes()
+    return None
+
+
 class Property:
     def __init__(self, source: str = "configuration"):
         self._source = source
@@ -141,6 +168,28 @@ class Property:
                 values.append(one[0] if len(one) == 1 else args[i])
                 i += 1
             target.put_values(key, values or [True], where)
+        return root
+
+    @classmethod
+    def from_bottle(cls, bottle: Any, source_name: str = "bottle") -> "Property":
+        """From a robogene.Bottle of (key value...) lists, as the C++ Property::from_bottle:
+        (key (k v...) (k v...)) is a group, (key) a flag (True); vocabs become their text."""
+        root = cls(source_name)
+        for i in range(len(bottle)):
+            where = f"{source_name} item {i}"
+            item = bottle[i]
+            entry = item.as_list() if item.is_list() else None
+            if entry is None or len(entry) == 0 or not _is_key(entry[0]):
+                raise ConfigError(f"{where}: expected (key value...), got {item.to_text()}")
+            key = _key_text(entry[0])
+            rest = [entry[k] for k in range(1, len(entry))]
+            if rest and all(v.is_list() and len(v.as_list()) > 0 and _is_key(v.as_list()[0]) for v in rest):
+                inner = type(bottle)()
+                for v in rest:
+                    inner.add(v)
+                root.add_group(key, where).merge(cls.from_bottle(inner, where))
+                continue
+            root.put_values(key, [_python_value(v) for v in rest] or [True], where)
         return root
 
     @classmethod

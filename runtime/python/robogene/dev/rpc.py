@@ -3,8 +3,9 @@
 """RPC in Python, driven by the generated wire tables (generated/wire.py): a server that answers
 request Bottles by calling a device, and the base of the generated clients. The bottles and the
 reply shapes are YARP 3's, as in the generated C++ (runtime/src/dev/generated/*_server.cpp):
-[ok] / [fail] for commands, [is] <echo> <values> [tsta] <n> <t> [ok] for queries, [nak] for
-requests of fewer than two items. Needs the compiled core (robogene.Bottle)."""
+[ok] / [fail] for commands, [is] <echo> <values> [tsta] <n> <t> [ok] for queries (no stamp for
+those the IDL marks `stamp: false`), [nak] for requests of fewer than two items. Needs the
+compiled core (robogene.Bottle)."""
 from __future__ import annotations
 
 import math
@@ -129,12 +130,12 @@ class RpcServer:
         self._implemented = [n for n in names if isinstance(device, getattr(_interfaces, n))]
         self._routes: Dict[Tuple[int, ...], Tuple] = {}
         for iface in names:
-            for method, (wire, echo, args, results) in INTERFACES[iface][1].items():
+            for method, (wire, echo, args, results, stamped) in INTERFACES[iface][1].items():
                 if wire is None:
                     continue
                 key = tuple(vocab(w) for w in wire)
-                entry = self._routes.setdefault(key, (echo, args, results, []))
-                entry[3].append((iface, method))
+                entry = self._routes.setdefault(key, (echo, args, results, bool(results) and stamped, []))
+                entry[4].append((iface, method))
         self._lock = threading.Lock()
         self._stamps = 0
 
@@ -181,12 +182,12 @@ class RpcServer:
         for key in sorted(self._routes, key=len, reverse=True):
             if tuple(codes[:len(key)]) != key:
                 continue
-            echo, args, results, candidates = self._routes[key]
-            stamp = self._stamp() if results else 0
+            echo, args, results, stamped, candidates = self._routes[key]
+            stamp = self._stamp() if stamped else 0
             reply = self._call(request, len(key), echo, args, results, candidates)
             if reply is None:
                 return _single("fail")
-            if results:
+            if stamped:
                 _finish(reply, stamp)
             else:
                 reply.add(Value.vocab(_OK))
@@ -220,16 +221,19 @@ class RpcServer:
         prefix = [vocab(w) for w in COMMANDS[self.service][1]]
         head, values = message[0].as_list(), message[1].as_list()
         codes = [vocab_of(head[i]) for i in range(len(head))]
-        for key in sorted(self._routes, key=len, reverse=True):
-            if list(key[:len(prefix)]) != prefix or len(key) == len(prefix) or self._routes[key][2]:
-                continue
-            path = key[len(prefix):]
-            if tuple(codes[:len(path)]) != path:
+        # (head, the request path it stands for): the service's commands without the prefix, and
+        # the aliases (YARP's [dtq] for [set] [torq] [ref]).
+        heads = [(key[len(prefix):], key) for key in self._routes
+                 if list(key[:len(prefix)]) == prefix and len(key) > len(prefix) and not self._routes[key][2]]
+        heads += [(tuple(vocab(w) for w in alias), tuple(vocab(w) for w in path))
+                  for alias, path in COMMANDS[self.service][2].items()]
+        for path, key in sorted(heads, key=lambda h: len(h[0]), reverse=True):
+            if tuple(codes[:len(path)]) != path or key not in self._routes:
                 continue
             request = Bottle()
-            for code in prefix:
+            for code in key:
                 request.add(Value.vocab(code))
-            for item in head:
+            for item in list(head)[len(path):]:
                 request.add(item)
             args = self._routes[key][1]
             if args and args[-1].endswith("[]"):

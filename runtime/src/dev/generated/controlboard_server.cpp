@@ -22,7 +22,7 @@ using Handler = bool (*)(const ControlboardServer::Interfaces&, const Bottle&, B
 struct Route {
   vocab_t path[3];
   std::size_t length;
-  bool value_reply;
+  bool stamped;  // a query whose reply carries [tsta] <n> <t>; YARP's IPidControl replies do not
   Handler handler;
 };
 
@@ -1021,16 +1021,16 @@ bool h_set_vmos(const ControlboardServer::Interfaces& d, const Bottle& req, Bott
 const Route kRoutes[] = {
     {{vocab("get"), vocab("icmd"), vocab("cmds")}, 3, true, &h_get_icmd_cmds},
     {{vocab("get"), vocab("icmd"), vocab("cmod")}, 3, true, &h_get_icmd_cmod},
-    {{vocab("get"), vocab("pid"), vocab("err")}, 3, true, &h_get_pid_err},
-    {{vocab("get"), vocab("pid"), vocab("errs")}, 3, true, &h_get_pid_errs},
-    {{vocab("get"), vocab("pid"), vocab("lim")}, 3, true, &h_get_pid_lim},
-    {{vocab("get"), vocab("pid"), vocab("lims")}, 3, true, &h_get_pid_lims},
-    {{vocab("get"), vocab("pid"), vocab("out")}, 3, true, &h_get_pid_out},
-    {{vocab("get"), vocab("pid"), vocab("outs")}, 3, true, &h_get_pid_outs},
-    {{vocab("get"), vocab("pid"), vocab("pid")}, 3, true, &h_get_pid_pid},
-    {{vocab("get"), vocab("pid"), vocab("pids")}, 3, true, &h_get_pid_pids},
-    {{vocab("get"), vocab("pid"), vocab("ref")}, 3, true, &h_get_pid_ref},
-    {{vocab("get"), vocab("pid"), vocab("refs")}, 3, true, &h_get_pid_refs},
+    {{vocab("get"), vocab("pid"), vocab("err")}, 3, false, &h_get_pid_err},
+    {{vocab("get"), vocab("pid"), vocab("errs")}, 3, false, &h_get_pid_errs},
+    {{vocab("get"), vocab("pid"), vocab("lim")}, 3, false, &h_get_pid_lim},
+    {{vocab("get"), vocab("pid"), vocab("lims")}, 3, false, &h_get_pid_lims},
+    {{vocab("get"), vocab("pid"), vocab("out")}, 3, false, &h_get_pid_out},
+    {{vocab("get"), vocab("pid"), vocab("outs")}, 3, false, &h_get_pid_outs},
+    {{vocab("get"), vocab("pid"), vocab("pid")}, 3, false, &h_get_pid_pid},
+    {{vocab("get"), vocab("pid"), vocab("pids")}, 3, false, &h_get_pid_pids},
+    {{vocab("get"), vocab("pid"), vocab("ref")}, 3, false, &h_get_pid_ref},
+    {{vocab("get"), vocab("pid"), vocab("refs")}, 3, false, &h_get_pid_refs},
     {{vocab("get"), vocab("torq"), vocab("axes")}, 3, true, &h_get_torq_axes},
     {{vocab("get"), vocab("torq"), vocab("ref")}, 3, true, &h_get_torq_ref},
     {{vocab("get"), vocab("torq"), vocab("refs")}, 3, true, &h_get_torq_refs},
@@ -1203,46 +1203,50 @@ bool ControlboardServer::publish_state(Bottle& out) {
 
 bool ControlboardServer::command(const Bottle& message) {
   struct CommandRoute {
-    vocab_t path[3];
+    vocab_t head[3];
+    std::size_t head_length;
+    vocab_t path[3];  // the request path the head stands for
     std::size_t length;
     bool packed;  // the values are one per-axis list, not separate arguments
   };
   static const CommandRoute kCommands[] = {
-      {{vocab("icmd"), vocab("cmds")}, 2, true},  // IControlMode.setControlModes
-      {{vocab("icmd"), vocab("cmod")}, 2, false},  // IControlMode.setControlMode
-      {{vocab("pid"), vocab("lim")}, 2, false},  // IPidControl.setPidErrorLimit
-      {{vocab("pid"), vocab("lims")}, 2, true},  // IPidControl.setPidErrorLimits
-      {{vocab("pid"), vocab("pid")}, 2, false},  // IPidControl.setPid
-      {{vocab("pid"), vocab("pids")}, 2, true},  // IPidControl.setPids
-      {{vocab("pid"), vocab("ref")}, 2, false},  // IPidControl.setPidReference
-      {{vocab("pid"), vocab("refs")}, 2, true},  // IPidControl.setPidReferences
-      {{vocab("torq"), vocab("ref")}, 2, false},  // ITorqueControl.setRefTorque
-      {{vocab("torq"), vocab("refs")}, 2, true},  // ITorqueControl.setRefTorques
-      {{vocab("acc")}, 1, false},  // IPositionControl.setRefAcceleration
-      {{vocab("accs")}, 1, true},  // IPositionControl.setRefAccelerations
-      {{vocab("enc")}, 1, false},  // IEncoders.setEncoder
-      {{vocab("encs")}, 1, true},  // IEncoders.setEncoders
-      {{vocab("ere")}, 1, false},  // IEncoders.resetEncoder
-      {{vocab("eres")}, 1, false},  // IEncoders.resetEncoders
-      {{vocab("pos")}, 1, false},  // IPositionControl.positionMove
-      {{vocab("poss")}, 1, true},  // IPositionControl.positionMoveAll
-      {{vocab("rel")}, 1, false},  // IPositionControl.relativeMove
-      {{vocab("rels")}, 1, true},  // IPositionControl.relativeMoveAll
-      {{vocab("sto")}, 1, false},  // IPositionControl.stop
-      {{vocab("stos")}, 1, false},  // IPositionControl.stopAll
-      {{vocab("vel")}, 1, false},  // IPositionControl.setRefSpeed
-      {{vocab("vels")}, 1, true},  // IPositionControl.setRefSpeeds
-      {{vocab("vmo")}, 1, false},  // IVelocityControl.velocityMove
-      {{vocab("vmos")}, 1, true},  // IVelocityControl.velocityMoveAll
+      {{vocab("icmd"), vocab("cmds")}, 2, {vocab("set"), vocab("icmd"), vocab("cmds")}, 3, true},  // IControlMode.setControlModes
+      {{vocab("icmd"), vocab("cmod")}, 2, {vocab("set"), vocab("icmd"), vocab("cmod")}, 3, false},  // IControlMode.setControlMode
+      {{vocab("pid"), vocab("lim")}, 2, {vocab("set"), vocab("pid"), vocab("lim")}, 3, false},  // IPidControl.setPidErrorLimit
+      {{vocab("pid"), vocab("lims")}, 2, {vocab("set"), vocab("pid"), vocab("lims")}, 3, true},  // IPidControl.setPidErrorLimits
+      {{vocab("pid"), vocab("pid")}, 2, {vocab("set"), vocab("pid"), vocab("pid")}, 3, false},  // IPidControl.setPid
+      {{vocab("pid"), vocab("pids")}, 2, {vocab("set"), vocab("pid"), vocab("pids")}, 3, true},  // IPidControl.setPids
+      {{vocab("pid"), vocab("ref")}, 2, {vocab("set"), vocab("pid"), vocab("ref")}, 3, false},  // IPidControl.setPidReference
+      {{vocab("pid"), vocab("refs")}, 2, {vocab("set"), vocab("pid"), vocab("refs")}, 3, true},  // IPidControl.setPidReferences
+      {{vocab("torq"), vocab("ref")}, 2, {vocab("set"), vocab("torq"), vocab("ref")}, 3, false},  // ITorqueControl.setRefTorque
+      {{vocab("torq"), vocab("refs")}, 2, {vocab("set"), vocab("torq"), vocab("refs")}, 3, true},  // ITorqueControl.setRefTorques
+      {{vocab("acc")}, 1, {vocab("set"), vocab("acc")}, 2, false},  // IPositionControl.setRefAcceleration
+      {{vocab("accs")}, 1, {vocab("set"), vocab("accs")}, 2, true},  // IPositionControl.setRefAccelerations
+      {{vocab("dtq")}, 1, {vocab("set"), vocab("torq"), vocab("ref")}, 3, false},  // ITorqueControl.setRefTorque (alias)
+      {{vocab("dtqs")}, 1, {vocab("set"), vocab("torq"), vocab("refs")}, 3, true},  // ITorqueControl.setRefTorques (alias)
+      {{vocab("enc")}, 1, {vocab("set"), vocab("enc")}, 2, false},  // IEncoders.setEncoder
+      {{vocab("encs")}, 1, {vocab("set"), vocab("encs")}, 2, true},  // IEncoders.setEncoders
+      {{vocab("ere")}, 1, {vocab("set"), vocab("ere")}, 2, false},  // IEncoders.resetEncoder
+      {{vocab("eres")}, 1, {vocab("set"), vocab("eres")}, 2, false},  // IEncoders.resetEncoders
+      {{vocab("pos")}, 1, {vocab("set"), vocab("pos")}, 2, false},  // IPositionControl.positionMove
+      {{vocab("poss")}, 1, {vocab("set"), vocab("poss")}, 2, true},  // IPositionControl.positionMoveAll
+      {{vocab("rel")}, 1, {vocab("set"), vocab("rel")}, 2, false},  // IPositionControl.relativeMove
+      {{vocab("rels")}, 1, {vocab("set"), vocab("rels")}, 2, true},  // IPositionControl.relativeMoveAll
+      {{vocab("sto")}, 1, {vocab("set"), vocab("sto")}, 2, false},  // IPositionControl.stop
+      {{vocab("stos")}, 1, {vocab("set"), vocab("stos")}, 2, false},  // IPositionControl.stopAll
+      {{vocab("vel")}, 1, {vocab("set"), vocab("vel")}, 2, false},  // IPositionControl.setRefSpeed
+      {{vocab("vels")}, 1, {vocab("set"), vocab("vels")}, 2, true},  // IPositionControl.setRefSpeeds
+      {{vocab("vmo")}, 1, {vocab("set"), vocab("vmo")}, 2, false},  // IVelocityControl.velocityMove
+      {{vocab("vmos")}, 1, {vocab("set"), vocab("vmos")}, 2, true},  // IVelocityControl.velocityMoveAll
   };
   if (message.size() != 2 || !message[0].is_list() || !message[1].is_list()) return false;
   const Bottle& head = message[0].as_list();
   const Bottle& values = message[1].as_list();
   for (const CommandRoute& c : kCommands) {
-    if (!matches(head, c.path, c.length)) continue;
+    if (!matches(head, c.head, c.head_length)) continue;
     Bottle request;
-    request.add(Value::vocab(vocab("set")));
-    for (const Value& item : head) request.add(item);
+    for (std::size_t i = 0; i < c.length; ++i) request.add(Value::vocab(c.path[i]));
+    for (std::size_t i = c.head_length; i < head.size(); ++i) request.add(head[i]);
     if (c.packed) {
       request.add(Value::list(values));
     } else {
@@ -1292,8 +1296,8 @@ Bottle ControlboardServer::respond(const Bottle& req) {
   }
   for (const Route& route : kRoutes) {
     if (!matches(req, route.path, route.length)) continue;
-    // Queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
-    const std::int32_t stamp = route.value_reply ? stamps_++ : 0;
+    // Stamped queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
+    const std::int32_t stamp = route.stamped ? stamps_++ : 0;
     Bottle reply;
     bool ok = false;
     try {
@@ -1302,7 +1306,7 @@ Bottle ControlboardServer::respond(const Bottle& req) {
       ok = false;  // a device that throws answers like one that fails
     }
     if (!ok) return single("fail");
-    if (route.value_reply) {
+    if (route.stamped) {
       rpc::finish_value_reply(reply, stamp, now_seconds());
     } else {
       reply.add(Value::vocab(vocab("ok")));

@@ -22,7 +22,7 @@ using Handler = bool (*)(const GrabberServer::Interfaces&, const Bottle&, Bottle
 struct Route {
   vocab_t path[3];
   std::size_t length;
-  bool value_reply;
+  bool stamped;  // a query whose reply carries [tsta] <n> <t>; YARP's IPidControl replies do not
   Handler handler;
 };
 
@@ -268,8 +268,8 @@ Bottle GrabberServer::respond(const Bottle& req) {
   }
   for (const Route& route : kRoutes) {
     if (!matches(req, route.path, route.length)) continue;
-    // Queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
-    const std::int32_t stamp = route.value_reply ? stamps_++ : 0;
+    // Stamped queries are numbered whether they succeed or not, as YARP's lastRpcStamp is.
+    const std::int32_t stamp = route.stamped ? stamps_++ : 0;
     Bottle reply;
     bool ok = false;
     try {
@@ -278,7 +278,7 @@ Bottle GrabberServer::respond(const Bottle& req) {
       ok = false;  // a device that throws answers like one that fails
     }
     if (!ok) return single("fail");
-    if (route.value_reply) {
+    if (route.stamped) {
       rpc::finish_value_reply(reply, stamp, now_seconds());
     } else {
       reply.add(Value::vocab(vocab("ok")));

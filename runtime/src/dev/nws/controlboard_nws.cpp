@@ -41,8 +41,13 @@ void ControlboardNws::open(DeviceDriver& device, const Searchable& config) {
   const double period = config.get_float("period", 0.02, 0.001, 10.0);
   single_port_ = config.get_bool("single_port", false);
   NameClient names = device_name_client(config);
+  auto server_of_device = std::make_unique<ControlboardServer>(device);
+  if (server_of_device->interfaces().empty()) {
+    throw ConfigError(name + ": the device to serve implements none of the interfaces of the " +
+                      ControlboardServer::kServiceName + " service");
+  }
   device_ = &device;
-  server_ = std::make_unique<ControlboardServer>(device);
+  server_ = std::move(server_of_device);
 
   auto* server = server_.get();
   const bool single = single_port_;

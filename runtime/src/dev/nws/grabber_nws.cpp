@@ -14,7 +14,12 @@ void GrabberNws::open(DeviceDriver& device, const Searchable& config) {
   const std::string name = port_name_option(config, "name");
   const double period = config.get_float("period", 0.0, 0.0, 10.0);
   NameClient names = device_name_client(config);
-  server_ = std::make_unique<GrabberServer>(device);
+  auto server_of_device = std::make_unique<GrabberServer>(device);
+  if (server_of_device->interfaces().empty()) {
+    throw ConfigError(name + ": the device to serve implements none of the interfaces of the " +
+                      GrabberServer::kServiceName + " service");
+  }
+  server_ = std::move(server_of_device);
   auto* server = server_.get();
   rpc_.set_reader([server](const Bottle& data, const MessageInfo&, Bottle* reply) {
     Bottle answer = server->respond(data);

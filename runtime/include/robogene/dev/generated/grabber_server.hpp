@@ -6,8 +6,9 @@
 //
 // The RPC side of the "grabber" service: respond() turns one request bottle into calls on
 // the device and returns the reply bottle, in YARP 3's shapes: [ok] / [fail] for commands,
-// [is] <echo> <values> [tsta] <n> <t> [ok] for queries, [many] "<usage>" ... for `help`, [nak]
-// for other requests of fewer than two items, [fail] for anything unknown or malformed. It needs no port: a port's reader calls it.
+// [is] <echo> <values> [tsta] <n> <t> [ok] for queries (without the stamp for those the IDL marks
+// `stamp: false`), [many] "<usage>" ... for `help`, [nak] for other requests of fewer than two
+// items, [fail] for anything unknown or malformed. It needs no port: a port's reader calls it.
 #pragma once
 
 #include <atomic>

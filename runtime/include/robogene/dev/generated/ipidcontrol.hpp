@@ -19,7 +19,7 @@ namespace robogene::dev {
 class IPidControl {
  public:
   static constexpr const char* kInterfaceName = "IPidControl";
-  static constexpr const char* kFingerprint = "f0a797b540ceb7eb";
+  static constexpr const char* kFingerprint = "f0f2670355e34013";
   static constexpr int kVersion = 1;
 
   virtual ~IPidControl() = default;

@@ -34,8 +34,8 @@ class ControlboardNws {
   ControlboardNws& operator=(const ControlboardNws&) = delete;
 
   // Serves `device` (which must outlive this) as `config` says: name (required), period
-  // (seconds, default 0.02), single_port, server. Throws ConfigError for a bad key and
-  // robogene::Error when a port cannot be opened.
+  // (seconds, default 0.02), single_port, server. Throws ConfigError for a bad key or a device
+  // with none of the service's interfaces, and robogene::Error when a port cannot be opened.
   void open(DeviceDriver& device, const Searchable& config);
   // Stops streaming and closes (unregisters) every port. Idempotent.
   void close();

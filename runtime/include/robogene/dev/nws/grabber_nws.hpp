@@ -27,7 +27,8 @@ class GrabberNws {
   GrabberNws(const GrabberNws&) = delete;
   GrabberNws& operator=(const GrabberNws&) = delete;
 
-  // Serves `device` (which must outlive this): name (required), period, server.
+  // Serves `device` (which must outlive this): name (required), period, server. Throws
+  // ConfigError for a bad key or a device with none of the grabber service's interfaces.
   void open(DeviceDriver& device, const Searchable& config);
   void close();
   std::vector<std::string> port_names() const;

@@ -2,13 +2,15 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The simulated motion of one axis, the same model as the C++ test_motor (axis_motion.cpp):
 the time-optimal way to a target position or velocity within the reference speed and
-acceleration, integrated in steps of at most one millisecond."""
+acceleration, integrated in steps of at most one millisecond; under a torque reference a rigid
+body with inertia and viscous damping, J dw/dt = t - b w, integrated exactly."""
 from __future__ import annotations
 
 import math
 
 MAX_STEP = 1e-3
-IDLE, POSITION, VELOCITY = "idle", "position", "velocity"
+DEG_PER_RAD = 57.29577951308232  # 180 / pi
+IDLE, POSITION, VELOCITY, TORQUE = "idle", "position", "velocity", "torque"
 
 
 class AxisMotion:
@@ -21,6 +23,9 @@ class AxisMotion:
         self.ref_speed = ref_speed
         self.ref_acceleration = ref_acceleration
         self.ref_velocity = 0.0
+        self.ref_torque = 0.0
+        self.inertia = 0.01  # kg m^2
+        self.damping = 0.5   # N m s/rad
 
     def step(self, dt: float) -> None:
         while dt > 0.0:
@@ -28,8 +33,21 @@ class AxisMotion:
             self._substep(h)
             dt -= h
 
+    def _torque_substep(self, h: float) -> None:
+        # J dw/dt = t - b w has w(h) = w_end + (w0 - w_end) e^(-h b/J), w_end = t / b; degrees.
+        k = self.damping / self.inertia
+        w_end = DEG_PER_RAD * self.ref_torque / self.damping
+        decay = math.exp(-k * h)
+        w0 = self.velocity
+        self.velocity = w_end + (w0 - w_end) * decay
+        self.position += w_end * h + (w0 - w_end) * (1.0 - decay) / k
+        self.acceleration = DEG_PER_RAD * self.ref_torque / self.inertia - k * self.velocity
+
     def _substep(self, h: float) -> None:
         if self.goal == IDLE:
+            return
+        if self.goal == TORQUE:
+            self._torque_substep(h)
             return
         a = self.ref_acceleration
         wanted = self.ref_velocity
@@ -61,6 +79,9 @@ class AxisMotion:
     def move_at(self, velocity: float) -> None:
         self.goal, self.ref_velocity = VELOCITY, velocity
 
+    def push(self, torque: float) -> None:
+        self.goal, self.ref_torque = TORQUE, torque
+
     def idle(self) -> None:
         self.goal, self.velocity, self.acceleration = IDLE, 0.0, 0.0
 
@@ -69,6 +90,15 @@ class AxisMotion:
             self.target = self.position + self.velocity * abs(self.velocity) / (2.0 * self.ref_acceleration)
         elif self.goal == VELOCITY:
             self.ref_velocity = 0.0
+        elif self.goal == TORQUE:
+            self.ref_torque = 0.0  # the damping brings the axis to rest
+
+    def torque(self) -> float:
+        """The torque the motor exerts, N m: the reference under torque control, otherwise what
+        the body needs for its present motion, J a + b w."""
+        if self.goal == TORQUE:
+            return self.ref_torque
+        return (self.inertia * self.acceleration + self.damping * self.velocity) / DEG_PER_RAD
 
     def set_position(self, p: float) -> None:
         self.target += p - self.position

@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """test_motor in Python: the same simulated control board as the C++ driver (see
-drivers/fake/test_motor/test_motor.hpp for the behaviour and the configuration keys)."""
+drivers/fake/test_motor/test_motor.hpp and test_motor_torque_pid.cpp for the behaviour and the
+configuration keys)."""
 from __future__ import annotations
 
 import math
@@ -9,9 +10,11 @@ import threading
 from typing import Callable, List, Optional, Sequence
 
 from ..device_driver import DeviceDriver, ISimulationClock, SimClock
-from ..generated import ControlMode, IControlMode, IEncoders, IPositionControl, IVelocityControl
+from ..generated import (ControlMode, IControlMode, IEncoders, IPidControl, IPositionControl, ITorqueControl,
+                         IVelocityControl)
 from ..property import Property
-from .axis_motion import POSITION, VELOCITY, AxisMotion
+from .axis_motion import POSITION, AxisMotion
+from .test_motor_torque_pid import TorqueAndPids
 
 
 def _finite(v) -> bool:
@@ -22,7 +25,8 @@ def _positive(v) -> bool:
     return _finite(v) and v > 0
 
 
-class TestMotor(DeviceDriver, IEncoders, IPositionControl, IVelocityControl, IControlMode, ISimulationClock):
+class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVelocityControl, IControlMode,
+                ITorqueControl, IPidControl, ISimulationClock):
     __test__ = False  # not a pytest test class, despite the name
 
     def __init__(self) -> None:
@@ -32,6 +36,9 @@ class TestMotor(DeviceDriver, IEncoders, IPositionControl, IVelocityControl, ICo
         self._open = False
         self._axes: List[AxisMotion] = []
         self._modes: List[ControlMode] = []
+        self._max_torque = 5.0
+        self._pids: List[dict] = []
+        self._error_limits: List[dict] = []
 
     # ---- DeviceDriver, ISimulationClock -----------------------------------------------------
 
@@ -40,9 +47,16 @@ class TestMotor(DeviceDriver, IEncoders, IPositionControl, IVelocityControl, ICo
             n = config.get_int("axes", 4, 1, 64)
             speed = config.get_float("ref_speed", 10.0, 1e-9, 1e9)
             acc = config.get_float("ref_acceleration", 50.0, 1e-9, 1e9)
+            max_torque = config.get_float("max_torque", 5.0, 1e-9, 1e9)
+            inertia = config.get_float("inertia", 0.01, 1e-9, 1e9)
+            damping = config.get_float("damping", 0.5, 1e-9, 1e9)
             self._clock.configure(config)
             self._axes = [AxisMotion(speed, acc) for _ in range(n)]
+            for axis in self._axes:
+                axis.inertia, axis.damping = inertia, damping
+            self._max_torque = max_torque
             self._modes = [ControlMode.POSITION] * n
+            self._reset_pids(n)
             self._last = self._clock.now()
             self._open = True
             return True
@@ -51,6 +65,7 @@ class TestMotor(DeviceDriver, IEncoders, IPositionControl, IVelocityControl, ICo
         with self._lock:
             self._open = False
             self._axes, self._modes = [], []
+            self._reset_pids(0)
             return True
 
     def now(self) -> float:
@@ -220,16 +235,19 @@ class TestMotor(DeviceDriver, IEncoders, IPositionControl, IVelocityControl, ICo
 
     # ---- IControlMode ----------------------------------------------------------------------
 
-    _SIMULATED = (ControlMode.IDLE, ControlMode.POSITION, ControlMode.VELOCITY)
+    _SIMULATED = (ControlMode.IDLE, ControlMode.POSITION, ControlMode.VELOCITY, ControlMode.TORQUE)
 
     def _apply_mode(self, a: AxisMotion, i: int, mode) -> None:
         mode = ControlMode(mode)
         if mode == ControlMode.IDLE:
             a.idle()
         elif mode == ControlMode.POSITION and self._modes[i] != mode:
-            a.move_to(a.position)
+            a.move_to(a.position)  # brake at the reference acceleration, hold where it rests
+            a.stop()
         elif mode == ControlMode.VELOCITY and self._modes[i] != mode:
             a.move_at(0.0)
+        elif mode == ControlMode.TORQUE and self._modes[i] != mode:
+            a.push(0.0)  # no torque until one is asked for
         self._modes[i] = mode
 
     def getControlMode(self, j: int) -> Optional[ControlMode]:

@@ -152,7 +152,7 @@ class IPidControl(abc.ABC):
     """Read and tune the PID controllers of each axis, whichever control loop they close."""
 
     INTERFACE_NAME = "IPidControl"
-    FINGERPRINT = "f0a797b540ceb7eb"
+    FINGERPRINT = "f0f2670355e34013"
     VERSION = 1
 
     @abc.abstractmethod
