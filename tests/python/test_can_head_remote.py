@@ -2,12 +2,16 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The head's CAN driver from outside, every piece its own process: `robogene server`, `robogene
 can-sim` simulating the three boards on a virtual bus, `robogene dev --device robogene_can --from
-drivers/can/config/head.ini --bus virtual:...` serving them, and this process as the remote client
-(remote_controlboard). The same client body first drives `robogene dev --device test_motor --axes
-6`: every joint through a position move and a velocity move with the encoders tracking, read back
-through the client and the state:o stream. The client cannot tell the two apart."""
+drivers/can/config/head.ini --bus virtual:...` serving them, and a remote_controlboard client in
+another process (this one, or the paper's program). Each test first runs against `robogene dev
+--device test_motor --axes 6`, then unchanged against the CAN head: every joint through a position
+move and a velocity move with the encoders tracking (the Python client, encoders by RPC and on
+state:o), and the paper's section 3.3 program (the C++ client, encoders from stateExt:o). The
+clients cannot tell the two apart."""
 from __future__ import annotations
 
+import re
+import subprocess
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -187,3 +191,18 @@ def test_a_remote_client_moves_every_joint_with_encoders_tracking(served_head, n
         client.close()
     for proc in started:
         assert proc.popen.poll() is None, f"{proc.name} died during the test\n{proc.describe()}"
+
+
+def test_the_paper_section_3_3_program_runs_unchanged(served_head, robogene_bin, yarp_env):
+    """The C++ remote_controlboard (encoders from stateExt:o, the velocity move on command:i) in the
+    paper's program: joint 0 moves towards 40 deg at 5 deg/s, joint 1 runs at 5 deg/s."""
+    program = Path(robogene_bin).parent / "paper_section_3_3"
+    run = subprocess.run([str(program), "--device", "remote_controlboard", "--remote", "/head", "--local", "/paper",
+                          "--seconds", "1.5"], capture_output=True, text=True, env=yarp_env, timeout=30)
+    assert run.returncode == 0, run.stderr
+    m = re.fullmatch(r"t=(\S+) s  joint 0: +(\S+) deg  joint 1: +(\S+) deg", run.stdout.splitlines()[-1])
+    assert m, run.stdout
+    t, j0, j1 = (float(g) for g in m.groups())
+    # 5 deg/s after a 0.05 s ramp, less one state period when remote.
+    assert 5 * (t - 0.2) < j0 <= 5 * t + 1e-6, run.stdout
+    assert 5 * (t - 0.2) < j1 <= 5 * t + 1e-6, run.stdout
