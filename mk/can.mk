@@ -29,6 +29,18 @@ test-can-vm: runtime $(STAMPS)/can-vm-parts $(STAMPS)/py-can
 	$(PY) drivers/can/vm/decode_with_cantools.py drivers/can/generated/head.dbc \
 	  $(CAN_VM_OUT)/candump-vcan0.log $(CAN_VM_OUT)/can-sim.log $(CAN_VM_OUT)/robogene_can.log
 
+# docs/electronics.md carries the protocol tables in brief, a block generated from the IDL
+# (codegen/robogene_codegen/emitters/markdown_can/doc_blocks.py): `make generate` rewrites it and
+# `make check-generated` fails when it is stale.
+CAN_DOC_BLOCKS = PYTHONPATH=$(ROOT)/codegen $(PY) -m robogene_codegen.emitters.markdown_can.doc_blocks
+.PHONY: can-doc-blocks check-can-doc-blocks
+generate: can-doc-blocks
+check-generated: check-can-doc-blocks
+can-doc-blocks: $(VENV)/.stamp
+	$(CAN_DOC_BLOCKS) --update
+check-can-doc-blocks: $(VENV)/.stamp
+	$(CAN_DOC_BLOCKS) --check
+
 TEST_TARGETS += test-can test-can-vm
 HELP_LINES   += "make head-sim   simulate the head's CAN boards on the virtual bus 'head' (no hardware)" \
                 "make test-can   run the CAN bus, simulator and driver tests on the virtual bus" \

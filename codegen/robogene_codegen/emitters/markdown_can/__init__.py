@@ -3,7 +3,7 @@
 """Markdown tables of each CAN protocol and board configuration, for docs/can/."""
 from __future__ import annotations
 
-from ...can.model import CanField
+from ...can.model import CanField, CanProtocol
 from ...idl.model import Idl
 from ..common import environment, html_comment_header
 
@@ -29,9 +29,28 @@ def layout(fields: list[CanField]) -> str:
     return "<br>".join(parts)
 
 
-def emit(idl: Idl) -> dict[str, str]:
+def brief(fields: list[CanField]) -> str:
+    """`position` (count), `speed` (count/s): a payload's fields without their byte layout."""
+    if not fields:
+        return "—"
+    return ", ".join(f"`{f.name}`" + (f" ({f.unit or f.type_name})" if f.unit or f.enum or f.flags else "")
+                     for f in fields)
+
+
+def _environment():
     env = environment(__file__)
-    env.globals.update(layout=layout, number=number)
+    env.globals.update(layout=layout, number=number, brief=brief)
+    return env
+
+
+def summary(p: CanProtocol) -> str:
+    """The identifier layout, the classes and the command and broadcast tables in brief: the
+    block docs/electronics.md carries (doc_blocks.py keeps it current)."""
+    return _environment().get_template("protocol_summary.md.j2").render(p=p)
+
+
+def emit(idl: Idl) -> dict[str, str]:
+    env = _environment()
     out = {}
     for p in idl.can_protocols:
         out[f"{OUT_DIR}/{p.name}.md"] = env.get_template("protocol.md.j2").render(
