@@ -67,6 +67,12 @@ def test_yarps_remote_controlboard_moves_the_simulated_can_head(yarpserver, yarp
 
     limits = head_limits()
     assert theirs.value("[get] [axes]") == str(len(limits))
+    # YARP's client answers [get] [encs] from what stateExt:o streamed, and [fail] until the first
+    # message has arrived (a moment after it connected): wait for that first.
+    deadline = time.monotonic() + 10
+    while theirs.call("[get] [encs]") == "[fail]":
+        assert time.monotonic() < deadline, "no encoders arrived from /interop/head/stateExt:o within 10 s"
+        time.sleep(0.1)
     start = theirs.encoders()
     targets = [lo + 0.3 * (hi - lo) for lo, hi in limits]
     for j, target in enumerate(targets):
