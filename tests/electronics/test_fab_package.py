@@ -76,6 +76,19 @@ def test_pick_and_place_lists_every_smd_part(fab):
         assert placed[ref]["Side"] == "top"
 
 
+def _references(cell):
+    """KiCad's BOM writes runs of three or more consecutive references as a range: C31-C33."""
+    refs = []
+    for item in cell.split(","):
+        run = re.fullmatch(r"([A-Z]+)(\d+)-\1(\d+)", item)
+        refs += [f"{run[1]}{n}" for n in range(int(run[2]), int(run[3]) + 1)] if run else [item]
+    return refs
+
+
+def test_bom_reference_ranges_are_expanded():
+    assert _references("C2,C31-C33,U9") == ["C2", "C31", "C32", "C33", "U9"]
+
+
 def test_bom_has_order_codes_for_every_part_and_matches_the_schematic(fab):
     with open(fab / "bom.csv", newline="") as f:
         rows = list(csv.DictReader(f))
@@ -83,7 +96,7 @@ def test_bom_has_order_codes_for_every_part_and_matches_the_schematic(fab):
     symbols = _schematic_symbols()
     refs = []
     for row in rows:
-        group = row["Reference"].split(",")
+        group = _references(row["Reference"])
         assert row["MPN"].strip() and row["Manufacturer"].strip(), f"row without order code: {row}"
         assert int(row["Qty"]) == len(group), row
         for ref in group:

@@ -3,13 +3,14 @@
 """The committed schematic and project files are exactly what the generator writes from design.py."""
 import json
 import pathlib
+import sys
 
 import pytest
 
 import design
 import gen_project
 import gen_schematic
-from conftest import BOARD_DIR, NAME, SCH
+from conftest import BOARD_DIR, NAME, ROOT, SCH
 from kicad_lib import FOOTPRINT_DIR
 from sexpr import SexprError, parse
 
@@ -53,6 +54,23 @@ def test_every_part_has_order_codes_and_a_library_footprint():
         assert (ROOT_FP / f"{lib}.pretty" / f"{name}.kicad_mod").exists(), part.footprint
         if part.in_bom:
             assert part.mpn and part.manufacturer, part.ref
+
+
+def test_every_bom_part_is_in_the_head_catalog():
+    """The head BOM merges this board's BOM by MPN; a part the catalog lacks stops `make fab`."""
+    sys.path.insert(0, str(ROOT / "hardware" / "bom"))
+    from robogene_bom import catalog
+    by_mpn = catalog.load().by_mpn()
+    missing = sorted({f"{p.mpn} ({p.ref})" for p in design.parts() if p.in_bom and p.mpn.casefold() not in by_mpn})
+    assert not missing, f"not in hardware/bom/catalog.yaml: {', '.join(missing)}"
+
+
+def test_schematic_layout_rejects_a_block_in_the_title_block(monkeypatch):
+    title, _x, _y, width = gen_schematic.BLOCKS["axis2"]
+    _paper, page_w, page_h = gen_schematic.PAPER
+    monkeypatch.setitem(gen_schematic.BLOCKS, "axis2", (title, page_w - 130, page_h - 60, width))
+    with pytest.raises(ValueError, match=r"U7 \(axis2\) (leaves the drawing|runs into the title block)"):
+        gen_schematic.build()
 
 
 def test_net_classes_match_real_net_names():

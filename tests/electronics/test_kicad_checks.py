@@ -36,18 +36,20 @@ def test_drc_with_schematic_parity_is_clean(kicad_cli, tmp_path):
 
 
 def test_drc_exit_code_catches_a_broken_board(kicad_cli, tmp_path):
-    """The gate can fail: the same board with one track removed must be reported as unconnected."""
+    """The gate can fail: the same board with one signal net's tracks removed must be reported as
+    unconnected. (All of them: a single segment can lie wholly inside a pad, and removing it changes
+    nothing.)"""
     text = PCB.read_text()
     signal_nets = set(re.findall(r'^\t\(net (\d+) "/', text, re.M))
-    for m in re.finditer(r"\n\t\(segment\n.*?\n\t\)", text, re.S):
-        net = re.search(r"\(net (\d+)\)", m.group(0))
-        if net and net.group(1) in signal_nets:
-            start, end = m.span()
-            break
-    else:
-        raise AssertionError("no signal-net track segment found in the board file")
+    items = [(m.span(), re.search(r"\(net (\d+)\)", m.group(0)))
+             for m in re.finditer(r"\n\t\((?:segment|via)\n.*?\n\t\)", text, re.S)]
+    victim = next((net.group(1) for _, net in items if net and net.group(1) in signal_nets), None)
+    assert victim, "no signal-net track segment found in the board file"
+    for (start, end), net in reversed(items):
+        if net and net.group(1) == victim:
+            text = text[:start] + text[end:]
     broken = tmp_path / PCB.name
-    broken.write_text(text[:start] + text[end:])
+    broken.write_text(text)
     for side in ("kicad_pro", "kicad_sch"):
         src = PCB.with_suffix("." + side)
         (tmp_path / src.name).write_text(src.read_text())

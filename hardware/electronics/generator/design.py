@@ -133,10 +133,11 @@ def _can_parts():
 
 
 def _axis_parts(n, first):
-    """One motor channel: H-bridge, inline shunt + amplifier, motor and encoder connectors."""
+    """One motor channel: H-bridge, inline shunt + amplifier, motor and encoder connectors, and the
+    buffer between the quadrature encoder and the MCU."""
     b = f"axis{n}"
     m = f"M{n}_"
-    u_drv, u_amp = f"U{first}", f"U{first + 1}"
+    u_drv, u_amp, u_buf = f"U{first}", f"U{first + 1}", f"U{8 + n}"
     return [
         Part(u_drv, "Driver_Motor:DRV8872DDA", "DRV8872DDA", "Package_SO:Texas_HTSOP-8-1EP_3.9x4.9mm_P1.27mm_EP2.95x4.9mm_Mask2.4x3.1mm_ThermalVias",
              "DRV8872DDAR", "Texas Instruments",
@@ -155,7 +156,17 @@ def _axis_parts(n, first):
         Part(f"J{10 + 10 * n}", "Connector_Generic:Conn_01x02", "MOTOR", JST_VH2, "B2P-VH(LF)(SN)", "JST",
              {"1": m + "MA", "2": m + "OUT2"}, b, f"motor {n}"),
         Part(f"J{11 + 10 * n}", "Connector_Generic:Conn_01x04", "QENC", JST_PH.format(n=4), "B4B-PH-K-S(LF)(SN)", "JST",
-             {"1": "+5V", "2": m + "QA", "3": m + "QB", "4": "GND"}, b, f"motor encoder {n} (quadrature)"),
+             {"1": "+5V", "2": m + "ENC_A", "3": m + "ENC_B", "4": "GND"}, b, f"motor encoder {n} (quadrature)"),
+        # The encoder runs on 5 V and drives its outputs to 5 V. The MCU pins must not see that: PA0/PA1
+        # are 3.6 V-tolerant analog pins, and no pin may be driven while 3.3 V is down. The buffer runs on
+        # 3.3 V, its inputs take 5.5 V with or without supply (Ioff), and its Schmitt inputs square up
+        # slow edges. The pull-downs hold the inputs low when no encoder is plugged in.
+        Part(u_buf, "74xGxx:74LVC2G17", "74LVC2G17", "Package_TO_SOT_SMD:SOT-23-6", "SN74LVC2G17DBVR",
+             "Texas Instruments", {"1": m + "ENC_A", "6": m + "QA", "3": m + "ENC_B", "4": m + "QB",
+                                   "5": "+3V3", "2": "GND"}, b, f"encoder buffer, motor {n} (5 V in, 3.3 V out)"),
+        _c(f"C{23 + 10 * n}", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        _r(f"R{21 + 10 * n}", "10k", m + "ENC_A", "GND", b, "RC0603FR-0710KL"),
+        _r(f"R{22 + 10 * n}", "10k", m + "ENC_B", "GND", b, "RC0603FR-0710KL"),
         Part(f"J{12 + 10 * n}", "Connector_Generic:Conn_01x05", "AEA", JST_PH.format(n=5), "B5B-PH-K-S(LF)(SN)", "JST",
              {"1": "+5V", "2": "AEA_CLK", "3": m + "AEA_CS", "4": "AEA_DO", "5": "GND"}, b,
              f"joint encoder {n} (absolute, SSI)"),

@@ -10,7 +10,7 @@ import sys
 import uuid
 
 import design
-from kicad_lib import flattened_symbol, pins
+from kicad_lib import flattened_symbol, pins, units
 from sexpr import Sym, dump
 
 PROJECT = "robogene-motor-board"
@@ -88,11 +88,11 @@ class Sheet:
                            _effects(size=size, justify="left bottom"), [S("uuid"), uid("text", key or s)]])
 
     def symbol(self, lib_id, ref, value, x, y, props, pin_numbers, key, in_bom=True, angle=0, hide_ref=False,
-               ref_at=None, value_at=None):
+               ref_at=None, value_at=None, unit=1):
         self.lib(lib_id)
         ref_at = ref_at or (x, y - 5)
         value_at = value_at or (x, y + 5)
-        node = [S("symbol"), [S("lib_id"), lib_id], [S("at"), x, y, angle], [S("unit"), 1],
+        node = [S("symbol"), [S("lib_id"), lib_id], [S("at"), x, y, angle], [S("unit"), unit],
                 [S("exclude_from_sim"), S("no")], [S("in_bom"), S("yes" if in_bom else "no")],
                 [S("on_board"), S("yes")], [S("dnp"), S("no")], [S("uuid"), uid("sym", key)],
                 _prop("Reference", ref, ref_at[0], ref_at[1], hide=hide_ref, justify="left"),
@@ -102,7 +102,7 @@ class Sheet:
         for num in sorted(set(pin_numbers), key=lambda s: (len(s), s)):
             node.append([S("pin"), num, [S("uuid"), uid("pin", key, num)]])
         node.append([S("instances"), [S("project"), PROJECT, [S("path"), "/" + ROOT_UUID, [S("reference"), ref],
-                                                             [S("unit"), 1]]]])
+                                                             [S("unit"), unit]]]])
         self.items.append(node)
 
     def power(self, net, x, y, dx, dy):
@@ -113,10 +113,10 @@ class Sheet:
                     ["1"], ref, angle=rot, hide_ref=True, ref_at=(x, y), value_at=(x + 2 * dx, y + 2 * dy + (2 if dy == 0 else 0)))
 
 
-def _extent(part):
-    """Bounding box of a placed part (pins + stubs + labels), relative to its origin, screen coords."""
+def _extent(part, unit=1):
+    """Bounding box of a placed unit (pins + stubs + labels), relative to its origin, screen coords."""
     xs, ys = [0.0], [0.0]
-    for num, name, etype, px, py, ang in pins(part.lib_id):
+    for num, name, etype, px, py, ang in units(part.lib_id)[unit]:
         dx, dy = _OUT[ang]
         net = part.pins.get(num)
         length = STUB + (0 if net in design.POWER_NETS or net is None else len(net) * CHAR_W + 1)
@@ -127,11 +127,12 @@ def _extent(part):
     return min(xs) - 2, max(xs) + 2, min(ys) - 7, max(ys) + 7
 
 
-def place(sheet, part, ox, oy):
+def place(sheet, part, ox, oy, unit=1):
+    """Place one unit of the part (single-unit symbols have unit 1 only) with its stubs and labels."""
     ox, oy = snap(ox), snap(oy)
-    lib_pins = pins(part.lib_id)
+    lib_pins = units(part.lib_id)[unit]
     declared = set(part.pins)
-    known = {p[0] for p in lib_pins}
+    known = {p[0] for p in pins(part.lib_id)}
     if declared - known:
         raise ValueError(f"{part.ref}: pins {sorted(declared - known)} not in symbol {part.lib_id}")
     by_pos = {}
@@ -158,23 +159,56 @@ def place(sheet, part, ox, oy):
             sheet.power(net, ex, ey, dx, dy)
         else:
             sheet.label(net, ex, ey, _label_angle(dx, dy), key)
-    x0, x1, y0, y1 = _extent(part)
+    x0, x1, y0, y1 = _extent(part, unit)
     props = [("Footprint", part.footprint), ("Datasheet", "~"), ("Description", part.description or part.value),
              ("MPN", part.mpn), ("Manufacturer", part.manufacturer)]
-    sheet.symbol(part.lib_id, part.ref, part.value, ox, oy, props, [p[0] for p in lib_pins], part.ref,
-                 in_bom=part.in_bom, ref_at=(snap(ox + x0 + 2), snap(oy + y0 + 4)),
-                 value_at=(snap(ox + x0 + 2), snap(oy + y1 - 2)))
+    sheet.symbol(part.lib_id, part.ref, part.value, ox, oy, props, [p[0] for p in lib_pins],
+                 part.ref if unit == 1 else f"{part.ref}/unit{unit}", in_bom=part.in_bom,
+                 ref_at=(snap(ox + x0 + 2), snap(oy + y0 + 4)), value_at=(snap(ox + x0 + 2), snap(oy + y1 - 2)),
+                 unit=unit)
 
 
-# Block frames on an A3 sheet (420 x 297 mm): (title, x, y, width)
+# Block frames on an A2 sheet (594 x 420 mm; A3 became too small with the encoder buffers):
+# (title, x, y, width)
+PAPER = ("A2", 594, 420)
 BLOCKS = {
-    "power": ("Supply: reverse polarity, TVS, 12 V -> 5 V buck, 5 V -> 3.3 V LDO, bus voltage sense", 15, 20, 195),
-    "mcu": ("Microcontroller STM32G431 (FDCAN), crystal, SWD header, status LED", 220, 20, 190),
-    "can": ("CAN bus: transceiver, ESD, daisy-chain connectors, jumper-selectable 120 ohm termination", 15, 125, 195),
-    "axis1": ("Motor 1: H-bridge, inline current sense, motor and encoder connectors", 15, 195, 195),
-    "axis2": ("Motor 2: H-bridge, inline current sense, motor and encoder connectors", 220, 195, 190),
-    "mech": ("Mounting holes (M3)", 335, 125, 75),
+    "power": ("Supply: reverse polarity, TVS, 12 V -> 5 V buck, 5 V -> 3.3 V LDO, bus voltage sense", 15, 20, 280),
+    "mcu": ("Microcontroller STM32G431 (FDCAN), crystal, SWD header, status LED", 310, 20, 270),
+    "can": ("CAN bus: transceiver, ESD, daisy-chain connectors, jumper-selectable 120 ohm termination", 15, 125, 280),
+    "axis1": ("Motor 1: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 15, 195, 280),
+    "axis2": ("Motor 2: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 310, 195, 270),
+    "mech": ("Mounting holes (M3)", 310, 125, 75),
 }
+# KiCad's default drawing sheet: a border 10 mm in with a 2 mm ruler strip inside it, and the title
+# block within 110 x 34 mm of the border's bottom-right corner.
+BORDER = 12
+TITLE_BLOCK = (110, 34)
+
+
+def _check_layout(boxes):
+    """Every unit stays on the drawing, clear of the title block and of the other blocks' units."""
+    _, width, height = PAPER
+    tb = (width - 10 - TITLE_BLOCK[0], height - 10 - TITLE_BLOCK[1], width - 10, height - 10)
+    problems = []
+    for name, block, box in boxes:
+        if box[0] < BORDER or box[1] < BORDER or box[2] > width - BORDER or box[3] > height - BORDER:
+            problems.append(f"{name} ({block}) leaves the drawing: {_fmt_box(box)}")
+        if _boxes_overlap(box, tb):
+            problems.append(f"{name} ({block}) runs into the title block: {_fmt_box(box)}")
+    for i, (name, block, box) in enumerate(boxes):
+        for other, other_block, other_box in boxes[i + 1:]:
+            if block != other_block and _boxes_overlap(box, other_box):
+                problems.append(f"{name} ({block}) overlaps {other} ({other_block}): {_fmt_box(box)} / {_fmt_box(other_box)}")
+    if problems:
+        raise ValueError("schematic layout (gen_schematic.BLOCKS):\n  " + "\n  ".join(problems))
+
+
+def _boxes_overlap(a, b):
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _fmt_box(box):
+    return "x %.1f..%.1f y %.1f..%.1f" % (box[0], box[2], box[1], box[3])
 
 
 def build():
@@ -182,18 +216,21 @@ def build():
     by_block = {}
     for p in design.parts():
         by_block.setdefault(p.block, []).append(p)
+    boxes = []
     for block, plist in by_block.items():
         title, bx, by, bw = BLOCKS[block]
         sheet.text(title, bx, by, key=block)
         x, y, row_h = bx, by + 6, 0
-        for p in plist:
-            x0, x1, y0, y1 = _extent(p)
+        for p, unit in ((p, u) for p in plist for u in units(p.lib_id)):
+            x0, x1, y0, y1 = _extent(p, unit)
             w, h = x1 - x0, y1 - y0
             if x + w > bx + bw and x > bx:
                 x, y, row_h = bx, y + row_h + 4, 0
-            place(sheet, p, x - x0, y - y0)
+            place(sheet, p, x - x0, y - y0, unit)
+            boxes.append((p.ref if len(units(p.lib_id)) == 1 else f"{p.ref} unit {unit}", block, (x, y, x + w, y + h)))
             x += w + 4
             row_h = max(row_h, h)
+    _check_layout(boxes)
     for i, net in enumerate(("+12V", "GND", "+5V")):  # supplies driven through passive parts need a flag
         fx, fy = snap(340 + 20 * i), snap(155)
         sheet.symbol("power:PWR_FLAG", f"#FLG0{i + 1}", "PWR_FLAG", fx, fy,
@@ -207,7 +244,7 @@ def build():
 def render(sheet):
     libs = [S("lib_symbols")] + [flattened_symbol(l) for l in sorted(sheet.lib_ids)]
     root = [S("kicad_sch"), [S("version"), 20250114], [S("generator"), "robogene_gen_schematic"],
-            [S("generator_version"), "9.0"], [S("uuid"), ROOT_UUID], [S("paper"), "A3"],
+            [S("generator_version"), "9.0"], [S("uuid"), ROOT_UUID], [S("paper"), PAPER[0]],
             [S("title_block"), [S("title"), "Robogene head motor-control board (2 DC motors, CAN)"],
              [S("date"), "2026-11-22"], [S("rev"), "A"], [S("company"), "Robogene contributors"],
              [S("comment"), 1, "CERN-OHL-S-2.0"],

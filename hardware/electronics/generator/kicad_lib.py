@@ -89,10 +89,32 @@ def pins(lib_id):
 
 def _pin_list(lib_id):
     """[(number, name, electrical type, x, y, angle)] in symbol coordinates (y up)."""
+    return [pin for _unit, pin in _unit_pin_list(lib_id)]
+
+
+def _unit_pin_list(lib_id):
+    """[(unit, pin)] over the symbol's unit definitions, named NAME_<unit>_<body style>; unit 0 is
+    common to all units. Body style 2 (De Morgan alternative) repeats style 1's pins and is skipped."""
     out = []
     for unit in find(flattened_symbol(lib_id), "symbol"):
+        number, style = (int(v) for v in unit[1].rsplit("_", 2)[1:])
+        if style > 1:
+            continue
         for p in find(unit, "pin"):
             at = find1(p, "at")
-            out.append((str(find1(p, "number")[1]), str(find1(p, "name")[1]), str(p[1]),
-                        float(at[1]), float(at[2]), int(at[3]) if len(at) > 3 else 0))
+            out.append((number, (str(find1(p, "number")[1]), str(find1(p, "name")[1]), str(p[1]),
+                                 float(at[1]), float(at[2]), int(at[3]) if len(at) > 3 else 0)))
     return out
+
+
+@functools.lru_cache(maxsize=None)
+def _units(lib_id):
+    listed = _unit_pin_list(lib_id)
+    numbers = sorted({u for u, _ in listed} - {0}) or [1]
+    return tuple((n, tuple(pin for u, pin in listed if u in (0, n))) for n in numbers)
+
+
+def units(lib_id):
+    """{unit number: pins of that unit} (pins as in pins()); a single-unit symbol has unit 1 only.
+    Each unit of a multi-unit symbol (a gate, or the supply pins) is placed as its own instance."""
+    return {n: list(p) for n, p in _units(lib_id)}
