@@ -197,10 +197,10 @@ def test_paper_section_3_3_program_runs_unchanged_against_robogene_dev(name_serv
 def test_a_camera_is_wrapped_by_the_grabber_server(name_server, procs, robogene_bin, yarp_env, cli):
     dev = start_dev(procs, robogene_bin, yarp_env, "--device", "fake_grabber", "--width", "640", "--height", "480",
                     "--name", "/camera")
-    dev.wait_for_line(r"fake_grabber serving on /camera/rpc:i /camera/image:o$", stream="err")
-    reply = cli("rpc", "/camera/rpc:i", input="[get] [rgif]\n")
+    dev.wait_for_line(r"fake_grabber serving on /camera/rpc /camera$", stream="err")
+    reply = cli("rpc", "/camera/rpc", input="[get] [rgif]\n")
     assert re.match(r'Response: \[is\] \[rgif\] \(\(IFrameGrabberImage "?\w+"?\) \(IFrameGrabberControls "?\w+"?\)\)',
                     reply.stdout), reply.stdout
     dev.signal(signal.SIGTERM)
     assert dev.wait_exit() == 0
-    assert query(name_server, "/camera/image:o") is None
+    assert query(name_server, "/camera") is None

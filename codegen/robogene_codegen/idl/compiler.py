@@ -349,7 +349,7 @@ class _Checker:
                                         for k, v in enumerate(wire)):
             return []
         if wire is None:
-            for key in ("echo", "stamp", "all_axes"):
+            for key in ("echo", "stamp", "all_axes", "reply"):
                 if key in raw:
                     self.error(doc.key_mark(path + (key,)), f"'{key}' needs a 'wire' path; "
                                f"'{raw['name']}' is local-only")
@@ -370,8 +370,11 @@ class _Checker:
             self.error(doc.key_mark(path + ("stamp",)), f"'stamp' concerns the reply to a query; "
                        f"'{raw['name']}' has no results, so its reply is [ok] or [fail]")
             return []
+        reply = self._reply_head(doc, path, raw, wire, len(args), results)
+        if reply is False:
+            return []
         single = Method(iface, raw["name"], raw.get("cpp_name", raw["name"]), raw["doc"], wire,
-                        echo, args, results, mark, stamp=stamp)
+                        echo, args, results, mark, stamp=stamp and reply is None, reply_head=reply)
         forms = [single]
         all_raw = raw.get("all_axes")
         if all_raw is not None:
@@ -399,6 +402,35 @@ class _Checker:
                                 all_raw.get("doc", f"{raw['doc']} All axes at once."), awire, aecho, aargs, aresults,
                                 doc.mark(apath + ("name",)), form="all", twin=raw["name"], stamp=stamp))
         return forms
+
+    def _reply_head(self, doc: Document, path: tuple, raw: dict, wire, nargs: int, results):
+        """A query's own reply head (YARP's frame-grabber shape, `[fgc] [feat] [is] <value>`):
+        ints repeat a request item, strings are vocabs, `#vocab` is a vocab's code as an int32.
+        None when the method uses the [is] <echo> ... [tsta] [ok] shape."""
+        if "reply" not in raw:
+            return None
+        name = raw["name"]
+        if not results:
+            self.error(doc.key_mark(path + ("reply",)), f"'reply' concerns the reply to a query; "
+                       f"'{name}' has no results")
+            return False
+        for key in ("echo", "stamp", "all_axes"):
+            if key in raw:
+                self.error(doc.key_mark(path + (key,)), f"'{name}' has a 'reply' head, which "
+                           f"replaces '{key}'")
+                return False
+        head = []
+        for k, item in enumerate(raw["reply"]):
+            mark = doc.mark(path + ("reply", k))
+            if isinstance(item, int):
+                if item >= len(wire) + nargs:
+                    self.error(mark, f"reply item {item} of '{name}' is past the end of its "
+                               f"request ({len(wire)} vocabs and {nargs} arguments)")
+                    return False
+            elif not self._vocab_ok(item[1:] if item.startswith("#") and len(item) > 1 else item, mark):
+                return False
+            head.append(item)
+        return tuple(head)
 
     def _echo(self, doc: Document, path: tuple, echo, wire, nargs: int, name: str):
         if wire is None:
@@ -485,7 +517,8 @@ class _Checker:
                 aliases = self._command_aliases(doc, c.get("aliases", []), members, routes)
                 command = Command(c["port"], c["doc"], prefix, routes + aliases, aliases)
         return Service(data["service"], data["version"], data["doc"], data["rpc_port"], members,
-                       protocol, introspection, streams, command, doc.file, doc.mark(("service",)))
+                       protocol, introspection, streams, command, doc.file, doc.mark(("service",)),
+                       replies=data.get("replies", "stamped"))
 
     def _command_aliases(self, doc: Document, raws: list, members: list[Interface], routes: list) -> list:
         """Other heads for commands of the service (YARP's [dtq] j for setRefTorque(j, t)): each

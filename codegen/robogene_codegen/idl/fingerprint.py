@@ -30,6 +30,8 @@ def method_shape(m: Method) -> dict:
            "args": [_field(a) for a in m.args], "results": [_field(r) for r in m.results]}
     if not m.stamp:  # only when set, so that the fingerprints of stamped interfaces stay as they were
         out["stamp"] = False
+    if m.reply_head is not None:
+        out["reply"] = list(m.reply_head)
     return out
 
 
@@ -58,6 +60,7 @@ def assign_interface(iface: Interface) -> None:
 
 def assign_service(service: Service) -> None:
     canonical = {
+        **({"replies": service.replies} if service.replies != "stamped" else {}),
         "service": service.name, "version": service.version, "rpc_port": service.rpc_port,
         "interfaces": [[i.name, i.fingerprint] for i in service.interfaces],
         "protocol": None if service.protocol is None else {

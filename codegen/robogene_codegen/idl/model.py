@@ -97,6 +97,9 @@ class Method:
     form: str = "single"   # "single", "axis" (has an all-axes twin) or "all"
     twin: Optional[str] = None  # name of the other form
     stamp: bool = True     # a query's reply carries [tsta] <n> <t> (YARP's appendTimeStamp)
+    # A query's own reply head instead of [is] <echo> and the [tsta]/[ok] tail (YARP's frame
+    # grabbers): ints repeat a request item, strings are vocabs, "#vocab" a vocab's code as int32.
+    reply_head: Optional[tuple] = None
 
     @property
     def reply(self) -> str:
@@ -168,6 +171,9 @@ class Service:
     mark: Mark
     fingerprint: str = ""
     canonical: str = ""
+    # "stamped": control-board replies ([ok]/[fail], [is] ... [tsta] n t [ok]); "scoped": YARP's
+    # frame-grabber replies (a command's success is an empty bottle, a failure [nak]).
+    replies: str = "stamped"
 
 
 @dataclass

@@ -79,10 +79,25 @@ def call_args(m: Method) -> str:
     return ", ".join(param_name(f) for f in m.args + m.results)
 
 
-def route_init(r: Route) -> str:
+def ok_tail(m: Method, service: Service) -> bool:
+    """Whether a successful reply ends in [ok]: not a stamped one, not one with the IDL's own
+    reply head, and never in a scoped service (YARP's frame grabbers answer a command with an
+    empty bottle)."""
+    stamped = bool(m.results) and m.stamp
+    return not stamped and m.reply_head is None and service.replies != "scoped"
+
+
+def failure(service: Service) -> str:
+    """The vocab of a failed or unknown request: [nak] in scoped services, as YARP's
+    frameGrabber_nws_yarp answers, else [fail] as its control boards do."""
+    return "nak" if service.replies == "scoped" else "fail"
+
+
+def route_init(r: Route, service: Service) -> str:
     path = ", ".join(f'vocab("{v}")' for v in r.wire)
     stamped = "true" if r.method.results and r.method.stamp else "false"
-    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, &{r.handler}}}"
+    tail = "true" if ok_tail(r.method, service) else "false"
+    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, {tail}, &{r.handler}}}"
 
 
 def command_routes(service: Service) -> list:
@@ -111,7 +126,7 @@ def client_methods(service: Service) -> list:
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(usage_literals=usage_literals, command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
+    helpers = dict(failure=failure, usage_literals=usage_literals, command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
     out = {}

@@ -4,8 +4,10 @@
 request Bottles by calling a device, and the base of the generated clients. The bottles and the
 reply shapes are YARP 3's, as in the generated C++ (runtime/src/dev/generated/*_server.cpp):
 [ok] / [fail] for commands, [is] <echo> <values> [tsta] <n> <t> [ok] for queries (no stamp for
-those the IDL marks `stamp: false`), [nak] for requests of fewer than two items. Needs the
-compiled core (robogene.Bottle)."""
+those the IDL marks `stamp: false`), [nak] for requests of fewer than two items. In "scoped"
+services (YARP's frame grabbers) a command's success is an empty bottle, a failure [nak], and a
+query with a reply head (REPLY_HEADS) is that head and its values. Needs the compiled core
+(robogene.Bottle)."""
 from __future__ import annotations
 
 import math
@@ -16,7 +18,8 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 from .. import Bottle, Error, Value, vocab
 from .generated import interfaces as _interfaces
 from .generated import types as _types
-from .generated.wire import COMMANDS, ENUMS, INTERFACES, SERVICES, STREAMS, STRUCTS, USAGE
+from .generated.wire import (COMMANDS, ENUMS, INTERFACES, REPLIES, REPLY_HEADS, SERVICES, STREAMS,
+                             STRUCTS, USAGE)
 from .image import ImageRgb
 
 _INT32 = (-(2 ** 31), 2 ** 31 - 1)
@@ -111,6 +114,15 @@ def _single(word: str) -> Bottle:
     return b
 
 
+def _head_item(request: Bottle, item) -> Value:
+    """An item of a reply head: a request item, a vocab, or ("#vocab") a vocab's code as int32."""
+    if isinstance(item, int):
+        return request[item]
+    if item.startswith("#"):
+        return Value.int32(vocab(item[1:]))
+    return Value.vocab(vocab(item))
+
+
 def _finish(reply: Bottle, stamp: int) -> None:
     reply.add(Value.vocab(_TSTA))
     reply.add(Value.int32(stamp))
@@ -127,6 +139,8 @@ class RpcServer:
         self.service = service
         self.fingerprint, names, self._protocol, self._introspection = SERVICES[service]
         self._device = device
+        self._scoped = REPLIES.get(service) == "scoped"
+        self._failure = "nak" if self._scoped else "fail"
         self._implemented = [n for n in names if isinstance(device, getattr(_interfaces, n))]
         self._routes: Dict[Tuple[int, ...], Tuple] = {}
         for iface in names:
@@ -134,7 +148,9 @@ class RpcServer:
                 if wire is None:
                     continue
                 key = tuple(vocab(w) for w in wire)
-                entry = self._routes.setdefault(key, (echo, args, results, bool(results) and stamped, []))
+                head = REPLY_HEADS.get(iface, {}).get(method)
+                entry = self._routes.setdefault(key, (echo if head is None else head, args, results,
+                                                      bool(results) and stamped, []))
                 entry[4].append((iface, method))
         self._lock = threading.Lock()
         self._stamps = 0
@@ -186,14 +202,14 @@ class RpcServer:
             stamp = self._stamp() if stamped else 0
             reply = self._call(request, len(key), echo, args, results, candidates)
             if reply is None:
-                return _single("fail")
+                return _single(self._failure)
             if stamped:
                 _finish(reply, stamp)
-            else:
-                reply.add(Value.vocab(_OK))
+            elif not isinstance(echo, list) and not self._scoped:
+                reply.add(Value.vocab(_OK))  # no tail after a reply head, nor in scoped services
             return reply
         self._stamp()  # an unknown query still takes a number, as in YARP
-        return _single("fail")
+        return _single(self._failure)
 
     def publish(self, stream: str) -> Optional[Bottle]:
         """The message the stream port publishes now (None when the device cannot provide it):
@@ -264,8 +280,13 @@ class RpcServer:
         if answer is None:
             return None
         answer = answer if len(results) > 1 else (answer,)
-        reply = _single("is")
-        reply.add(Value.vocab(vocab(echo)) if isinstance(echo, str) else request[echo])
+        if isinstance(echo, list):  # the IDL's own reply head
+            reply = Bottle()
+            for item in echo:
+                reply.add(_head_item(request, item))
+        else:
+            reply = _single("is")
+            reply.add(Value.vocab(vocab(echo)) if isinstance(echo, str) else request[echo])
         try:
             for value, t in zip(answer, results):
                 encode(reply, value, t)
@@ -295,14 +316,34 @@ class RpcClient:
 
     def _command(self, wire, arg_types, args) -> bool:
         reply = self._request(wire, arg_types, args)
+        if REPLIES.get(self.SERVICE) == "scoped":
+            return reply is not None and len(reply) == 0  # YARP's frame grabbers: empty on success
         return reply is not None and len(reply) >= 1 and vocab_of(reply[0]) == _OK
 
-    def _query(self, wire, arg_types, args, result_types):
+    def _query(self, wire, arg_types, args, result_types, reply=None):
+        head = reply
+        request = Bottle()
+        for w in wire:
+            request.add(Value.vocab(vocab(w)))
         reply = self._request(wire, arg_types, args)
-        if reply is None or len(reply) < 2 + len(result_types) or vocab_of(reply[0]) != _IS:
+        if reply is None:
             return None
+        if head is not None:
+            try:
+                for k, v in enumerate(args):
+                    encode(request, v, arg_types[k])
+            except (TypeError, ValueError, AttributeError):
+                return None
+            if len(reply) != len(head) + len(result_types) or any(
+                    reply[k].to_text() != _head_item(request, item).to_text() for k, item in enumerate(head)):
+                return None
+            start = len(head)
+        elif len(reply) < 2 + len(result_types) or vocab_of(reply[0]) != _IS:
+            return None
+        else:
+            start = 2
         try:
-            values = [decode(reply[2 + k], t) for k, t in enumerate(result_types)]
+            values = [decode(reply[start + k], t) for k, t in enumerate(result_types)]
         except _Bad:
             return None
         return values[0] if len(values) == 1 else tuple(values)
@@ -326,6 +367,8 @@ class RpcClient:
                                     "built from different IDL)")
                     theirs.append((name, fp))
                 return theirs
+        if not protocol and REPLIES.get(self.SERVICE) == "scoped":
+            return []  # a YARP 3 frame grabber: its interfaces are not listed
         if not protocol:
             raise Error(f"{self.SERVICE} server does not list its interfaces")
         reply = self._transport(_path(protocol[0]))

@@ -28,7 +28,7 @@ Bottle start(std::initializer_list<const char*> path) {
 bool GrabberClient::command(const Bottle& request) {
   Bottle reply;
   if (!transport_(request, reply)) return false;
-  return reply.size() >= 1 && rpc::vocab_of(reply[0]) == vocab("ok");
+  return reply.empty();  // YARP's frame grabbers: success is an empty reply, a failure [nak]
 }
 
 bool GrabberClient::query(const Bottle& request, Bottle& reply, std::size_t results) {
@@ -64,7 +64,7 @@ std::vector<std::pair<std::string, std::string>> GrabberClient::check_server() {
     }
     return theirs;
   }
-  throw Error("grabber server does not list its interfaces: " + reply.to_text());
+  return theirs;  // a YARP 3 frame grabber: its interfaces are not listed
 }
 
 bool GrabberClient::getImage(ImageRgb& image) {
@@ -75,23 +75,33 @@ bool GrabberClient::getImage(ImageRgb& image) {
 bool GrabberClient::height(std::int32_t& rows) {
   Bottle request = start({"fgi", "get", "h"});
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], rows);
+  if (!transport_(request, reply) || reply.size() != 4) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[2].to_text()) return false;
+  if (rpc::vocab_of(reply[2]) != vocab("is")) return false;
+  return read(reply[3], rows);
 }
 
 bool GrabberClient::width(std::int32_t& cols) {
   Bottle request = start({"fgi", "get", "w"});
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], cols);
+  if (!transport_(request, reply) || reply.size() != 4) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[2].to_text()) return false;
+  if (rpc::vocab_of(reply[2]) != vocab("is")) return false;
+  return read(reply[3], cols);
 }
 
 bool GrabberClient::hasFeature(CameraFeature feature, bool& has) {
   Bottle request = start({"fgc", "has", "feat"});
   write(request, feature);
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], has);
+  if (!transport_(request, reply) || reply.size() != 5) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[1].to_text()) return false;
+  if (reply[2].to_text() != request[2].to_text()) return false;
+  if (!reply[3].is_int() || reply[3].as_int64() != vocab("feat")) return false;
+  return read(reply[4], has);
 }
 
 bool GrabberClient::setFeature(CameraFeature feature, double value) {
@@ -105,8 +115,11 @@ bool GrabberClient::getFeature(CameraFeature feature, double& value) {
   Bottle request = start({"fgc", "get", "feat"});
   write(request, feature);
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], value);
+  if (!transport_(request, reply) || reply.size() != 4) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[2].to_text()) return false;
+  if (rpc::vocab_of(reply[2]) != vocab("is")) return false;
+  return read(reply[3], value);
 }
 
 bool GrabberClient::setActive(CameraFeature feature, bool onoff) {
@@ -120,8 +133,11 @@ bool GrabberClient::getActive(CameraFeature feature, bool& active) {
   Bottle request = start({"fgc", "get", "actv"});
   write(request, feature);
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], active);
+  if (!transport_(request, reply) || reply.size() != 4) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[2].to_text()) return false;
+  if (rpc::vocab_of(reply[2]) != vocab("is")) return false;
+  return read(reply[3], active);
 }
 
 bool GrabberClient::setMode(CameraFeature feature, FeatureMode mode) {
@@ -135,8 +151,11 @@ bool GrabberClient::getMode(CameraFeature feature, FeatureMode& mode) {
   Bottle request = start({"fgc", "get", "mode"});
   write(request, feature);
   Bottle reply;
-  if (!query(request, reply, 1)) return false;
-  return read(reply[2], mode);
+  if (!transport_(request, reply) || reply.size() != 4) return false;
+  if (reply[0].to_text() != request[0].to_text()) return false;
+  if (reply[1].to_text() != request[2].to_text()) return false;
+  if (rpc::vocab_of(reply[2]) != vocab("is")) return false;
+  return read(reply[3], mode);
 }
 
 }  // namespace robogene::dev

@@ -23,6 +23,7 @@ struct Route {
   vocab_t path[3];
   std::size_t length;
   bool stamped;  // a query whose reply carries [tsta] <n> <t>; YARP's IPidControl replies do not
+  bool ok_tail;  // a success ends in [ok] (not after a reply head of the IDL, nor in scoped services)
   Handler handler;
 };
 
@@ -39,8 +40,9 @@ bool h_fgc_get_actv(const GrabberServer::Interfaces& d, const Bottle& req, Bottl
     ok = d.iframegrabbercontrols->getActive(feature, active);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
   reply.add(req[2]);
+  reply.add(Value::vocab(vocab("is")));
   write(reply, active);
   return true;
 }
@@ -58,8 +60,9 @@ bool h_fgc_get_feat(const GrabberServer::Interfaces& d, const Bottle& req, Bottl
     ok = d.iframegrabbercontrols->getFeature(feature, value);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
   reply.add(req[2]);
+  reply.add(Value::vocab(vocab("is")));
   write(reply, value);
   return true;
 }
@@ -77,8 +80,9 @@ bool h_fgc_get_mode(const GrabberServer::Interfaces& d, const Bottle& req, Bottl
     ok = d.iframegrabbercontrols->getMode(feature, mode);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
   reply.add(req[2]);
+  reply.add(Value::vocab(vocab("is")));
   write(reply, mode);
   return true;
 }
@@ -96,8 +100,10 @@ bool h_fgc_has_feat(const GrabberServer::Interfaces& d, const Bottle& req, Bottl
     ok = d.iframegrabbercontrols->hasFeature(feature, has);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
+  reply.add(req[1]);
   reply.add(req[2]);
+  reply.add(Value::int32(static_cast<std::int32_t>(vocab("feat"))));
   write(reply, has);
   return true;
 }
@@ -153,8 +159,9 @@ bool h_fgi_get_h(const GrabberServer::Interfaces& d, const Bottle& req, Bottle& 
     ok = d.iframegrabberimage->height(rows);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
   reply.add(req[2]);
+  reply.add(Value::vocab(vocab("is")));
   write(reply, rows);
   return true;
 }
@@ -168,22 +175,23 @@ bool h_fgi_get_w(const GrabberServer::Interfaces& d, const Bottle& req, Bottle& 
     ok = d.iframegrabberimage->width(cols);
   }
   if (!ok) return false;
-  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[0]);
   reply.add(req[2]);
+  reply.add(Value::vocab(vocab("is")));
   write(reply, cols);
   return true;
 }
 
 const Route kRoutes[] = {
-    {{vocab("fgc"), vocab("get"), vocab("actv")}, 3, true, &h_fgc_get_actv},
-    {{vocab("fgc"), vocab("get"), vocab("feat")}, 3, true, &h_fgc_get_feat},
-    {{vocab("fgc"), vocab("get"), vocab("mode")}, 3, true, &h_fgc_get_mode},
-    {{vocab("fgc"), vocab("has"), vocab("feat")}, 3, true, &h_fgc_has_feat},
-    {{vocab("fgc"), vocab("set"), vocab("actv")}, 3, false, &h_fgc_set_actv},
-    {{vocab("fgc"), vocab("set"), vocab("feat")}, 3, false, &h_fgc_set_feat},
-    {{vocab("fgc"), vocab("set"), vocab("mode")}, 3, false, &h_fgc_set_mode},
-    {{vocab("fgi"), vocab("get"), vocab("h")}, 3, true, &h_fgi_get_h},
-    {{vocab("fgi"), vocab("get"), vocab("w")}, 3, true, &h_fgi_get_w},
+    {{vocab("fgc"), vocab("get"), vocab("actv")}, 3, false, false, &h_fgc_get_actv},
+    {{vocab("fgc"), vocab("get"), vocab("feat")}, 3, false, false, &h_fgc_get_feat},
+    {{vocab("fgc"), vocab("get"), vocab("mode")}, 3, false, false, &h_fgc_get_mode},
+    {{vocab("fgc"), vocab("has"), vocab("feat")}, 3, false, false, &h_fgc_has_feat},
+    {{vocab("fgc"), vocab("set"), vocab("actv")}, 3, false, false, &h_fgc_set_actv},
+    {{vocab("fgc"), vocab("set"), vocab("feat")}, 3, false, false, &h_fgc_set_feat},
+    {{vocab("fgc"), vocab("set"), vocab("mode")}, 3, false, false, &h_fgc_set_mode},
+    {{vocab("fgi"), vocab("get"), vocab("h")}, 3, false, false, &h_fgi_get_h},
+    {{vocab("fgi"), vocab("get"), vocab("w")}, 3, false, false, &h_fgi_get_w},
 };
 
 // The answer to `help` ([many] and one string per line), as YARP's DeviceResponder gives it.
@@ -277,16 +285,16 @@ Bottle GrabberServer::respond(const Bottle& req) {
     } catch (const std::exception&) {
       ok = false;  // a device that throws answers like one that fails
     }
-    if (!ok) return single("fail");
+    if (!ok) return single("nak");
     if (route.stamped) {
       rpc::finish_value_reply(reply, stamp, now_seconds());
-    } else {
+    } else if (route.ok_tail) {
       reply.add(Value::vocab(vocab("ok")));
     }
     return reply;
   }
   ++stamps_;  // an unknown query still takes a number, as in YARP
-  return single("fail");
+  return single("nak");
 }
 
 }  // namespace robogene::dev

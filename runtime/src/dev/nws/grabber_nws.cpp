@@ -21,13 +21,16 @@ void GrabberNws::open(DeviceDriver& device, const Searchable& config) {
   }
   server_ = std::move(server_of_device);
   auto* server = server_.get();
-  rpc_.set_reader([server](const Bottle& data, const MessageInfo&, Bottle* reply) {
+  auto answer = [server](const Bottle& data, const MessageInfo&, Bottle* reply) {
     Bottle answer = server->respond(data);
     if (reply) *reply = std::move(answer);
-  });
+  };
+  rpc_.set_reader(answer);
+  // YARP 3.5's remote_grabber sends its requests to the image port itself.
+  image_.set_reader(answer);
   try {
-    rpc_.open(name + "/rpc:i", names);
-    image_.open(name + "/image:o", names);
+    rpc_.open(name + "/rpc", names);
+    image_.open(name, names);
   } catch (...) {
     close();
     throw;

@@ -56,12 +56,12 @@ void add_network_devices(DriverFactory& factory) {
               make<WrapperDevice<ControlboardNws>>());
   factory.add("controlboardwrapper2", "YARP 3.5's name for controlBoard_nws_yarp",
               make<WrapperDevice<ControlboardNws>>());
-  factory.add("frameGrabber_nws_yarp", "serves a camera `subdevice` on <name>/rpc:i and <name>/image:o",
+  factory.add("frameGrabber_nws_yarp", "serves a camera `subdevice` on <name>/rpc and <name> (the images), as YARP 3.5 does",
               make<WrapperDevice<GrabberNws>>());
   factory.add("grabberDual", "YARP 3.5's name for frameGrabber_nws_yarp", make<WrapperDevice<GrabberNws>>());
   factory.add("remote_controlboard", "a control board served elsewhere (remote, local, carrier)",
               make<RemoteControlboard>());
-  factory.add("remote_grabber", "a camera served elsewhere (remote, local, carrier)", make<RemoteGrabber>());
+  factory.add("remote_grabber", "a camera served elsewhere (remote, local, stream)", make<RemoteGrabber>());
 }
 
 std::string wrapper_for(DeviceDriver& device) {

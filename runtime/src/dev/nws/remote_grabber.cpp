@@ -19,7 +19,7 @@ bool RemoteGrabber::call(const Bottle& request, Bottle& reply) {
   try {
     return rpc_.write(request, reply);
   } catch (const std::exception& e) {
-    log::warn(local_ + "/rpc:o", std::string("request to ") + remote_ + "/rpc:i failed: " + e.what());
+    log::warn(local_ + "/rpc_client", std::string("request to ") + remote_ + "/rpc failed: " + e.what());
     return false;
   }
 }
@@ -28,7 +28,7 @@ bool RemoteGrabber::open(const Searchable& config) {
   close();
   remote_ = port_name_option(config, "remote");
   local_ = port_name_option(config, "local");
-  const std::string carrier = config.get_string("carrier", "tcp");
+  const std::string carrier = config.get_string("stream", config.get_string("carrier", "tcp"));
   timeout_ = std::chrono::milliseconds(
       static_cast<long>(config.get_float("timeout", 1.0, 0.001, 3600.0) * 1000.0));
   names_ = device_name_client(config);
@@ -43,12 +43,12 @@ bool RemoteGrabber::open(const Searchable& config) {
     arrived_.notify_all();
   });
   try {
-    rpc_.open(local_ + "/rpc:o", *names_);
-    rpc_.add_output(remote_ + "/rpc:i", "tcp");
+    rpc_.open(local_ + "/rpc_client", *names_);
+    rpc_.add_output(remote_ + "/rpc", "tcp");
     check_server();
-    images_.open(local_ + "/image:i", *names_);
-    auto r = network::connect(*names_, remote_ + "/image:o", local_ + "/image:i", carrier);
-    if (!r.ok) throw Error("connecting " + remote_ + "/image:o to " + local_ + "/image:i: " + r.message);
+    images_.open(local_, *names_);
+    auto r = network::connect(*names_, remote_, local_, carrier);
+    if (!r.ok) throw Error("connecting " + remote_ + " to " + local_ + ": " + r.message);
     image_connected_ = true;
   } catch (const ConfigError&) {
     close();
@@ -68,9 +68,9 @@ bool RemoteGrabber::close() {
   arrived_.notify_all();
   if (image_connected_ && names_) {
     try {
-      network::disconnect(*names_, remote_ + "/image:o", local_ + "/image:i");
+      network::disconnect(*names_, remote_, local_);
     } catch (const std::exception& e) {
-      log::warn(local_ + "/image:i", std::string("could not disconnect: ") + e.what());
+      log::warn(local_, std::string("could not disconnect: ") + e.what());
     }
     image_connected_ = false;
   }
@@ -91,10 +91,39 @@ bool RemoteGrabber::getImage(ImageRgb& image) {
   }
   std::string error;
   if (!decode_image(message, image, error)) {
-    log::warn(local_ + "/image:i", "a frame from " + remote_ + "/image:o cannot be decoded: " + error);
+    log::warn(local_, "a frame from " + remote_ + " cannot be decoded: " + error);
     return false;
   }
   return true;
+}
+
+bool RemoteGrabber::frame_size(std::int32_t& cols, std::int32_t& rows) {
+  Bottle message;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!arrived_.wait_for(lock, timeout_, [&] { return closing_ || frames_ != 0; }) || closing_) {
+      return false;
+    }
+    message = latest_;
+  }
+  ImageRgb image;
+  std::string error;
+  if (!decode_image(message, image, error)) return false;
+  cols = static_cast<std::int32_t>(image.width);
+  rows = static_cast<std::int32_t>(image.height);
+  return true;
+}
+
+bool RemoteGrabber::width(std::int32_t& cols) {
+  std::int32_t rows = 0;
+  if (frames_received() == 0 && GrabberClient::width(cols)) return true;
+  return frame_size(cols, rows);
+}
+
+bool RemoteGrabber::height(std::int32_t& rows) {
+  std::int32_t cols = 0;
+  if (frames_received() == 0 && GrabberClient::height(rows)) return true;
+  return frame_size(cols, rows);
 }
 
 std::uint64_t RemoteGrabber::frames_received() {

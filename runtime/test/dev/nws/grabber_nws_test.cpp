@@ -10,9 +10,11 @@
 #include <thread>
 
 #include "nws_test_util.hpp"
+#include "robogene/dev/generated/grabber_server.hpp"
 #include "robogene/dev/generated/interfaces.hpp"
 #include "robogene/dev/nws/remote_grabber.hpp"
 #include "robogene/dev/poly_driver.hpp"
+#include "robogene/port.hpp"
 
 using namespace robogene;
 using namespace robogene::dev;
@@ -103,4 +105,37 @@ TEST(GrabberNws, ControlsGoThroughRpc) {
   bool has = true;
   ASSERT_TRUE(controls->hasFeature(CameraFeature::focus, has));
   EXPECT_FALSE(has);
+}
+
+// The replies of YARP 3.5's frame grabbers (captured from its frameGrabber_nws_yarp and
+// grabberDual, tests/interop/test_grabber_devices.py): no [is]-first shape, no [tsta]/[ok].
+TEST(GrabberServer, AnswersInTheShapeOfYarp35FrameGrabbers) {
+  LocalNameServer ns;
+  PolyDriver camera;
+  ASSERT_TRUE(camera.open(ns.config("(device fake_grabber) (width 640) (height 480)"))) << camera.last_error();
+  GrabberServer server(*camera.device());
+  auto ask = [&](const char* text) { return server.respond(Bottle::from_text(text)).to_text(); };
+  EXPECT_EQ(ask("[fgi] [get] [w]"), "[fgi] [w] [is] 640");
+  EXPECT_EQ(ask("[fgi] [get] [h]"), "[fgi] [h] [is] 480");
+  EXPECT_EQ(ask("[fgc] [set] [feat] 7 0.25"), "");
+  EXPECT_EQ(ask("[fgc] [get] [feat] 7"), "[fgc] [feat] [is] 0.25");
+  EXPECT_EQ(ask("[fgc] [has] [feat] 7"), "[fgc] [has] [feat] 1952540006 1");
+  EXPECT_EQ(ask("[fgc] [has] [feat] 10"), "[fgc] [has] [feat] 1952540006 0");
+  EXPECT_EQ(ask("[fgc] [get] [feat] 10"), "[nak]");  // focus: fake_grabber has none
+  EXPECT_EQ(ask("[fgc] [bogus] [feat] 7"), "[nak]");
+}
+
+TEST(GrabberNws, OpensYarp35PortNamesAndAnswersOnTheImagePort) {
+  LocalNameServer ns;
+  ServedCamera served(ns, 10.0);
+  // YARP's remote_grabber sends its requests to <name> itself, frameGrabber_nwc_yarp to <name>/rpc.
+  PolyDriver client;
+  ASSERT_TRUE(client.open(ns.config("(device remote_grabber) (remote /camera) (local /viewer)")))
+      << client.last_error();
+  Port asker;
+  asker.open("/asker", ns.client());
+  asker.add_output("/camera", "tcp");
+  Bottle reply;
+  ASSERT_TRUE(asker.write(Bottle::from_text("[fgi] [get] [w]"), reply));
+  EXPECT_EQ(reply.to_text(), "[fgi] [w] [is] 640");
 }

@@ -25,7 +25,7 @@ namespace robogene::dev {
 class GrabberServer {
  public:
   static constexpr const char* kServiceName = "grabber";
-  static constexpr const char* kFingerprint = "a0683a2a407cd898";
+  static constexpr const char* kFingerprint = "a55fbefe4b8d565e";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {
@@ -37,7 +37,7 @@ class GrabberServer {
   explicit GrabberServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);
-  // What <name>/image:o publishes every 0.033 s: Each new frame as a YARP 3 image ([mat] [rgb] header and pixel blob).
+  // What <name>/ publishes every 0.033 s: Each new frame, on the server's own name, as a YARP 3 image ([mat] [rgb] header and pixel blob).
   // False when the device cannot provide it (then nothing is published).
   bool publish_image(Bottle& out);
   // (name fingerprint) of each interface the device implements, in the service's order.

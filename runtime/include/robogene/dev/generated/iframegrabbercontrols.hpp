@@ -19,7 +19,7 @@ namespace robogene::dev {
 class IFrameGrabberControls {
  public:
   static constexpr const char* kInterfaceName = "IFrameGrabberControls";
-  static constexpr const char* kFingerprint = "b474c8102d64c776";
+  static constexpr const char* kFingerprint = "cbffc663524d6e67";
   static constexpr int kVersion = 1;
 
   virtual ~IFrameGrabberControls() = default;

@@ -20,7 +20,7 @@ namespace robogene::dev {
 class IFrameGrabberImage {
  public:
   static constexpr const char* kInterfaceName = "IFrameGrabberImage";
-  static constexpr const char* kFingerprint = "0e78460de396f4b6";
+  static constexpr const char* kFingerprint = "9520a3686b751505";
   static constexpr int kVersion = 1;
 
   virtual ~IFrameGrabberImage() = default;

@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// The frame grabber's network server: puts a camera on the network under a prefix `name`:
-//   <name>/rpc:i    answers the grabber RPC vocabs (size, features) through GrabberServer
-//   <name>/image:o  every frame the device gives, as a YARP 3 image with a Stamp envelope
+// The frame grabber's network server: puts a camera on the network under a prefix `name`, with
+// the ports of YARP 3.5's grabberDual and frameGrabber_nws_yarp:
+//   <name>/rpc  answers the grabber RPC vocabs (size, features) through GrabberServer
+//   <name>      every frame the device gives, as a YARP 3 image with a Stamp envelope; it answers
+//               the same requests (YARP's remote_grabber sends them there)
 // The device sets the pace (getImage waits for its next frame); `period` (seconds, default 0)
 // is a minimum time between two published frames.
 #pragma once
@@ -37,8 +39,8 @@ class GrabberNws {
   void publish();
 
   std::unique_ptr<GrabberServer> server_;
-  Port rpc_;    // <name>/rpc:i
-  Port image_;  // <name>/image:o
+  Port rpc_;    // <name>/rpc
+  Port image_;  // <name>
   PeriodicThread publisher_;
   std::int32_t sequence_ = 0;
 };

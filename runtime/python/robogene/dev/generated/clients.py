@@ -216,28 +216,28 @@ class GrabberClient(RpcClient, IFrameGrabberImage, IFrameGrabberControls):
         return None  # local only: frames come on the stream port, not by RPC
 
     def height(self) -> Optional[int]:
-        return self._query(["fgi", "get", "h"], (), (), ("int32", ))
+        return self._query(["fgi", "get", "h"], (), (), ("int32", ), reply=[0, 2, "is"])
 
     def width(self) -> Optional[int]:
-        return self._query(["fgi", "get", "w"], (), (), ("int32", ))
+        return self._query(["fgi", "get", "w"], (), (), ("int32", ), reply=[0, 2, "is"])
 
     def hasFeature(self, feature: CameraFeature) -> Optional[bool]:
-        return self._query(["fgc", "has", "feat"], ("CameraFeature", ), (feature, ), ("bool", ))
+        return self._query(["fgc", "has", "feat"], ("CameraFeature", ), (feature, ), ("bool", ), reply=[0, 1, 2, "#feat"])
 
     def setFeature(self, feature: CameraFeature, value: float) -> bool:
         return self._command(["fgc", "set", "feat"], ("CameraFeature", "float64", ), (feature, value, ))
 
     def getFeature(self, feature: CameraFeature) -> Optional[float]:
-        return self._query(["fgc", "get", "feat"], ("CameraFeature", ), (feature, ), ("float64", ))
+        return self._query(["fgc", "get", "feat"], ("CameraFeature", ), (feature, ), ("float64", ), reply=[0, 2, "is"])
 
     def setActive(self, feature: CameraFeature, onoff: bool = True) -> bool:
         return self._command(["fgc", "set", "actv"], ("CameraFeature", "bool", ), (feature, onoff, ))
 
     def getActive(self, feature: CameraFeature) -> Optional[bool]:
-        return self._query(["fgc", "get", "actv"], ("CameraFeature", ), (feature, ), ("bool", ))
+        return self._query(["fgc", "get", "actv"], ("CameraFeature", ), (feature, ), ("bool", ), reply=[0, 2, "is"])
 
     def setMode(self, feature: CameraFeature, mode: FeatureMode = FeatureMode.MANUAL) -> bool:
         return self._command(["fgc", "set", "mode"], ("CameraFeature", "FeatureMode", ), (feature, mode, ))
 
     def getMode(self, feature: CameraFeature) -> Optional[FeatureMode]:
-        return self._query(["fgc", "get", "mode"], ("CameraFeature", ), (feature, ), ("FeatureMode", ))
+        return self._query(["fgc", "get", "mode"], ("CameraFeature", ), (feature, ), ("FeatureMode", ), reply=[0, 2, "is"])

@@ -96,7 +96,7 @@ class IFrameGrabberControls(abc.ABC):
     """Control how a camera acquires images: brightness, shutter, gain and the other features of CameraFeature, each with a value normalised to [0, 1]."""
 
     INTERFACE_NAME = "IFrameGrabberControls"
-    FINGERPRINT = "b474c8102d64c776"
+    FINGERPRINT = "cbffc663524d6e67"
     VERSION = 1
 
     @abc.abstractmethod
@@ -132,7 +132,7 @@ class IFrameGrabberImage(abc.ABC):
     """A source of RGB images of a fixed size (YARP's IFrameGrabberImage / IFrameGrabberRgb)."""
 
     INTERFACE_NAME = "IFrameGrabberImage"
-    FINGERPRINT = "0e78460de396f4b6"
+    FINGERPRINT = "9520a3686b751505"
     VERSION = 1
 
     @abc.abstractmethod

@@ -90,19 +90,19 @@ INTERFACES = {
         "setEncoder": (("set", "enc", ), 1, ("joint", "float64", ), (), True),
         "setEncoders": (("set", "encs", ), 1, ("float64[]", ), (), True),
     }),
-    "IFrameGrabberControls": ("b474c8102d64c776", {
-        "hasFeature": (("fgc", "has", "feat", ), 2, ("CameraFeature", ), ("bool", ), True),
+    "IFrameGrabberControls": ("cbffc663524d6e67", {
+        "hasFeature": (("fgc", "has", "feat", ), 2, ("CameraFeature", ), ("bool", ), False),
         "setFeature": (("fgc", "set", "feat", ), 2, ("CameraFeature", "float64", ), (), True),
-        "getFeature": (("fgc", "get", "feat", ), 2, ("CameraFeature", ), ("float64", ), True),
+        "getFeature": (("fgc", "get", "feat", ), 2, ("CameraFeature", ), ("float64", ), False),
         "setActive": (("fgc", "set", "actv", ), 2, ("CameraFeature", "bool", ), (), True),
-        "getActive": (("fgc", "get", "actv", ), 2, ("CameraFeature", ), ("bool", ), True),
+        "getActive": (("fgc", "get", "actv", ), 2, ("CameraFeature", ), ("bool", ), False),
         "setMode": (("fgc", "set", "mode", ), 2, ("CameraFeature", "FeatureMode", ), (), True),
-        "getMode": (("fgc", "get", "mode", ), 2, ("CameraFeature", ), ("FeatureMode", ), True),
+        "getMode": (("fgc", "get", "mode", ), 2, ("CameraFeature", ), ("FeatureMode", ), False),
     }),
-    "IFrameGrabberImage": ("0e78460de396f4b6", {
+    "IFrameGrabberImage": ("9520a3686b751505", {
         "getImage": (None, None, (), ("image_rgb", ), True),
-        "height": (("fgi", "get", "h", ), 2, (), ("int32", ), True),
-        "width": (("fgi", "get", "w", ), 2, (), ("int32", ), True),
+        "height": (("fgi", "get", "h", ), 2, (), ("int32", ), False),
+        "width": (("fgi", "get", "w", ), 2, (), ("int32", ), False),
     }),
     "IPidControl": ("f0f2670355e34013", {
         "setPid": (("set", "pid", "pid", ), 2, ("PidType", "joint", "Pid", ), (), True),
@@ -187,9 +187,24 @@ SERVICES = {
     "controlboard": ("865f94bcbd3aedde", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
 (("get", "prot", ), "prot", [1, 9, 0]),
 ("get", "rgif", )),
-    "grabber": ("a0683a2a407cd898", ("IFrameGrabberImage", "IFrameGrabberControls", ),
+    "grabber": ("a55fbefe4b8d565e", ("IFrameGrabberImage", "IFrameGrabberControls", ),
 None,
 ("get", "rgif", )),
+}
+
+# interface -> {method: reply head} for queries with the IDL's own reply head (YARP's frame
+# grabbers, no [tsta]/[ok] tail): ints repeat a request item, strings are vocabs, "#vocab" is a
+# vocab's code as an int32
+REPLY_HEADS = {
+    "IFrameGrabberControls": {"hasFeature": [0, 1, 2, "#feat"], "getFeature": [0, 2, "is"], "getActive": [0, 2, "is"], "getMode": [0, 2, "is"]},
+    "IFrameGrabberImage": {"height": [0, 2, "is"], "width": [0, 2, "is"]},
+}
+
+# service -> "stamped" (control-board replies: [ok]/[fail]) or "scoped" (YARP's frame grabbers:
+# a command's success is an empty bottle, a failure [nak])
+REPLIES = {
+    "controlboard": "stamped",
+    "grabber": "scoped",
 }
 
 # service -> the server's answer to `help`, one usage line per request path
@@ -283,5 +298,5 @@ COMMANDS = {
 # service -> {stream: (port, period in s, interface, method, result type)}
 STREAMS = {
     "controlboard": {"state": ("state:o", 0.02, "IEncoders", "getEncoders", "float64[]")},
-    "grabber": {"image": ("image:o", 0.033, "IFrameGrabberImage", "getImage", "image_rgb")},
+    "grabber": {"image": ("", 0.033, "IFrameGrabberImage", "getImage", "image_rgb")},
 }
