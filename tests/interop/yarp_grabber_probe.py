@@ -6,7 +6,7 @@ BufferedPortImageRgb and sends requests to its RPC port with a yarp.RpcClient.
 usage: yarp_grabber_probe.py <image port> <local prefix> <rpc port> [request ...]
 Prints `frame <w> <h> <x-step> <y-step> <nonzero>` for two frames (x-step: red of (x+1, y) minus
 red of (x, y) mod 256 if constant over row 1, else -1; likewise y-step on green down column 1;
-nonzero: bytes > 0 in row 240), then `reply <text>` for each request, then `done`."""
+nonzero: bytes > 0 in row 240 and in column 1, so that a horizontal line anywhere counts), then `reply <text>` for each request, then `done`."""
 import sys
 
 import yarp
@@ -18,6 +18,7 @@ def steps(img):
     ys = {(img.pixel(1, y + 1).g - img.pixel(1, y).g) % 256 for y in range(h - 1)}
     row = min(240, h - 1)
     nonzero = sum(1 for x in range(w) for c in (img.pixel(x, row).r, img.pixel(x, row).g, img.pixel(x, row).b) if c)
+    nonzero += sum(1 for y in range(h) for c in (img.pixel(1, y).r, img.pixel(1, y).g, img.pixel(1, y).b) if c)
     return (xs.pop() if len(xs) == 1 else -1), (ys.pop() if len(ys) == 1 else -1), nonzero
 
 

@@ -8,7 +8,11 @@
 namespace robogene::dev {
 namespace {
 
-constexpr std::int32_t kTopIsLow = 1 << 16;
+// Bit 16 of the quantum field: set, the blob holds the rows bottom row first. YARP 3.5 reads it
+// so (checked: an image a YARP Python program makes has the bit clear and its top row first; an
+// image sent with the bit set and its top row first shows upside down in YARP). YARP's C++
+// cameras (fakeFrameGrabber, sniff_image.txt) set it; we do too, so our bytes are theirs.
+constexpr std::int32_t kRowsBottomUp = 1 << 16;
 constexpr std::int64_t kMaxSide = 1 << 16;
 
 std::size_t row_bytes(std::int64_t width, std::int64_t quantum) {
@@ -24,8 +28,8 @@ Bottle encode_image(const ImageRgb& image, int quantum) {
   const std::size_t packed = static_cast<std::size_t>(image.width) * 3u;
   std::vector<std::uint8_t> pixels(row * static_cast<std::size_t>(image.height), 0);
   for (int y = 0; y < image.height; ++y) {
-    std::memcpy(pixels.data() + row * static_cast<std::size_t>(y),
-                image.pixels.data() + packed * static_cast<std::size_t>(y), packed);
+    const std::size_t wire_row = static_cast<std::size_t>(image.height - 1 - y);
+    std::memcpy(pixels.data() + row * wire_row, image.pixels.data() + packed * static_cast<std::size_t>(y), packed);
   }
   Bottle b;
   b.add(Value::vocab(vocab("mat")));
@@ -33,7 +37,7 @@ Bottle encode_image(const ImageRgb& image, int quantum) {
   Bottle& header = b.add_list();
   header.add(Value::int32(3));
   header.add(Value::int32(static_cast<std::int32_t>(pixels.size())));
-  header.add(Value::int32(quantum | kTopIsLow));
+  header.add(Value::int32(quantum | kRowsBottomUp));
   header.add(Value::int32(image.width));
   header.add(Value::int32(image.height));
   b.add(Value::blob(std::move(pixels)));
@@ -83,11 +87,11 @@ bool decode_image(const Bottle& m, ImageRgb& out, std::string& error) {
             (m[3].is_blob() ? std::to_string(m[3].as_blob().size()) : std::string("none"));
     return false;
   }
-  const bool top_is_low = (f[2] & kTopIsLow) != 0;
+  const bool bottom_up = (f[2] & kRowsBottomUp) != 0;
   out.resize(static_cast<int>(width), static_cast<int>(height));
   const std::size_t packed = static_cast<std::size_t>(width) * 3u;
   for (std::int64_t y = 0; y < height; ++y) {
-    const std::int64_t src_row = top_is_low ? y : height - 1 - y;
+    const std::int64_t src_row = bottom_up ? height - 1 - y : y;
     std::memcpy(out.pixels.data() + packed * static_cast<std::size_t>(y),
                 m[3].as_blob().data() + row * static_cast<std::size_t>(src_row), packed);
   }

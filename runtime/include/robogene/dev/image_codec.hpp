@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // Images on the wire as YARP 3 sends them (reference section 6): a bottle
-// [mat] [rgb] (depth size quantum|topIsLow<<16 width height) {pixels}, whose first 60 bytes are
-// YARP's ImageNetworkHeader. Rows in the blob are padded to `quantum` bytes.
+// [mat] [rgb] (depth size quantum|bottomUp<<16 width height) {pixels}, whose first 60 bytes are
+// YARP's ImageNetworkHeader. Rows in the blob are padded to `quantum` bytes, bottom row first when
+// bit 16 of the quantum field is set (as YARP's cameras send them), top row first otherwise.
 #pragma once
 
 #include <string>

@@ -383,12 +383,13 @@ class RpcClient:
 
 def encode_image(image: ImageRgb, quantum: int = 8) -> Bottle:
     """A YARP 3 image: [mat] [rgb] (3 size quantum|1<<16 width height) {pixels}, rows padded to
-    `quantum` bytes (the same bytes as the C++ encode_image)."""
+    `quantum` bytes, bottom row first as bit 16 says (the same bytes as the C++ encode_image)."""
     row = (image.width * 3 + quantum - 1) // quantum * quantum
     packed = image.width * 3
     pixels = bytearray(row * image.height)
     for y in range(image.height):
-        pixels[y * row:y * row + packed] = image.pixels[y * packed:(y + 1) * packed]
+        at = (image.height - 1 - y) * row
+        pixels[at:at + packed] = image.pixels[y * packed:(y + 1) * packed]
     b = Bottle()
     b.add(Value.vocab(vocab("mat")))
     b.add(Value.vocab(vocab("rgb")))
