@@ -51,3 +51,25 @@ TEST(ImageCodec, MalformedImagesAreRefusedWithTheReason) {
   EXPECT_EQ(error, "image header field 1 is not an integer: x");
   EXPECT_FALSE(decode_image(Bottle::from_text("1 2 3"), out, error));
 }
+
+// Row order, as YARP 3.5 reads it: an image its Python binding made (green = 10 * y, red = x)
+// arrives with bit 16 clear and the top row first; ours go with the bit set, bottom row first.
+TEST(ImageCodec, RowOrderFollowsBit16AsYarpReadsIt) {
+  const std::string yarp_python_image =
+      "(3 48 8 4 3) {0 0 7 1 0 7 2 0 7 3 0 7 89 127 0 0 0 10 7 1 10 7 2 10 7 3 10 7 89 127 0 0 "
+      "0 20 7 1 20 7 2 20 7 3 20 7 255 127 0 0}";
+  ImageRgb in;
+  std::string error;
+  ASSERT_TRUE(decode_image(Bottle::from_text("[mat] [rgb] " + yarp_python_image), in, error)) << error;
+  for (int y = 0; y < 3; ++y) {
+    EXPECT_EQ(in.at(2, y)[0], 2) << y;
+    EXPECT_EQ(in.at(2, y)[1], 10 * y) << y;
+  }
+  const Bottle out = encode_image(in);
+  EXPECT_EQ(out[2].to_text(), "(3 48 65544 4 3)");
+  EXPECT_EQ(out[3].as_blob()[1], 20);       // the first row on the wire is the bottom one
+  EXPECT_EQ(out[3].as_blob()[2 * 16 + 1], 0);  // the last is the top one
+  ImageRgb back;
+  ASSERT_TRUE(decode_image(out, back, error)) << error;
+  EXPECT_EQ(back.pixels, in.pixels);
+}
