@@ -130,19 +130,33 @@ def test_the_title_block_and_notes_are_filled(fab, machined, params):
             assert field in text, (name, field)
 
 
-def test_a_part_of_known_size_is_dimensioned_exactly(tmp_path):
-    """A 60 x 40 x 12 block with Ø6.6 and Ø4.5 holes through its top and a Ø3 hole through its front: every
-    extent, diameter and hole position must be printed, measured from the left and bottom edges."""
+@pytest.fixture(scope="module")
+def known_parts(tmp_path_factory):
+    """Two parts of known size drawn in one FreeCAD session:
+    - a 60 x 40 x 12 block with Ø6.6 and Ø4.5 holes through its top and a Ø3 hole through its front;
+    - a 50 x 16 x 6 slot-shaped plate (round ends, so no vertex at its left and right extremes) with a
+      Ø5 hole in the middle."""
+    folder = tmp_path_factory.mktemp("known")
     block = cq.Solid.makeBox(60, 40, 12)
     for d, at, axis, length in ((6.6, (10, 8, 0), (0, 0, 1), 12), (4.5, (45, 30, 0), (0, 0, 1), 12),
                                 (3.0, (30, 0, 6), (0, 1, 0), 40)):
         block = block.cut(cq.Solid.makeCylinder(d / 2, length, cq.Vector(*at), cq.Vector(*axis)))
-    step = tmp_path / "test_block.step"
-    cq.exporters.export(cq.Workplane().add(block), str(step))
-    data = freecad.draw([freecad.DrawingJob("test_block", step, "aluminium-6082", 2700.0)], tmp_path / "drawings")
-    (entry,) = data["drawings"]
-    dims = {(d["view"], d["kind"], d["type"], round(d["value"], 3)) for d in entry["dimensions"]}
-    expected = {
+    cq.exporters.export(cq.Workplane().add(block), str(folder / "test_block.step"))
+    slot = cq.Workplane("XY").slot2D(50, 16).extrude(6).faces(">Z").workplane().hole(5)
+    cq.exporters.export(slot, str(folder / "test_slot.step"))
+    data = freecad.draw([freecad.DrawingJob(n, folder / f"{n}.step", "aluminium-6082", 2700.0)
+                         for n in ("test_block", "test_slot")], folder / "drawings")
+    return {d["name"]: d for d in data["drawings"]}, folder / "drawings"
+
+
+def dimension_set(entry) -> set:
+    return {(d["view"], d["kind"], d["type"], round(d["value"], 3)) for d in entry["dimensions"]}
+
+
+def test_a_part_of_known_size_is_dimensioned_exactly(known_parts):
+    """Every extent, diameter and hole position must be printed, positions from the left and bottom edges."""
+    drawings, folder = known_parts
+    assert dimension_set(drawings["test_block"]) == {
         ("front", "extent", "DistanceX", 60), ("front", "extent", "DistanceY", 12),
         ("left", "extent", "DistanceX", 40), ("left", "extent", "DistanceY", 12),
         ("top", "extent", "DistanceX", 60), ("top", "extent", "DistanceY", 40),
@@ -152,12 +166,24 @@ def test_a_part_of_known_size_is_dimensioned_exactly(tmp_path):
         ("front", "position", "DistanceX", 30), ("front", "position", "DistanceY", 6),
         ("front", "diameter", "Diameter", 3),
     }
-    assert dims == expected
-    text = pdf_text(tmp_path / "drawings" / "test_block.pdf")
+    text = pdf_text(folder / "test_block.pdf")
     assert sorted(float(d) for d in DIAMETER.findall(text)) == [3.0, 4.5, 6.6]
     assert missing([60, 40, 12, 10, 45, 8, 30, 6], numbers(text), tol=1e-9) == []
-    # and a sheet that printed 59.5 instead of 60 would be caught
+    # and a sheet that printed 60 where 60.6 was due would be caught
     assert missing([60.6], numbers(text)) == [60.6]
+
+
+def test_an_extreme_on_a_curve_is_dimensioned_to_the_curve(known_parts):
+    """The slot's ends are arcs: its length runs to their apexes (cosmetic vertices), not to the arcs' ends."""
+    drawings, folder = known_parts
+    assert dimension_set(drawings["test_slot"]) == {
+        ("front", "extent", "DistanceX", 50), ("front", "extent", "DistanceY", 6),
+        ("left", "extent", "DistanceX", 16), ("left", "extent", "DistanceY", 6),
+        ("top", "extent", "DistanceX", 50), ("top", "extent", "DistanceY", 16),
+        ("top", "position", "DistanceX", 25), ("top", "position", "DistanceY", 8),
+        ("top", "diameter", "Diameter", 5),
+    }
+    assert missing([50, 16, 6, 25, 8], numbers(pdf_text(folder / "test_slot.pdf")), tol=1e-9) == []
 
 
 def test_a_missing_step_is_reported_by_name(tmp_path):
