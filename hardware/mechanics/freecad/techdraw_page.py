@@ -4,7 +4,6 @@
 notes. Runs inside FreeCAD (draw_parts.py drives it); TechDraw only exports pages with its GUI loaded."""
 from __future__ import annotations
 
-import math
 import os
 import time
 
@@ -131,7 +130,7 @@ class PartPage:
             v.X, v.Y = layout.centres[name]
         self.doc.recompute()
         _settle(self.views.values())
-        self.layout_ = layout
+        self.chosen = layout
         return layout
 
     def _resolve(self, view, refs, cosmetic: dict) -> list:
@@ -148,7 +147,7 @@ class PartPage:
     def dimension(self) -> list:
         """Create the planned dimensions; each must measure what the plan says (else the drawing is wrong)."""
         measured = self._measure()
-        scale = self.layout_.scale
+        scale = self.chosen.scale
         for name in PRINCIPAL:
             dimension_plan.place_labels(measured[name][1], scale, measured[name][2])
         # Curves without a vertex at their extreme get a cosmetic vertex there, so a dimension can end on it.
