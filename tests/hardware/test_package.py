@@ -36,6 +36,7 @@ def test_every_part_has_its_files(fab, assembly):
             assert (fab / "stl" / f"{design}.stl").exists(), design
         if part.kind == "machined":
             assert (fab / "drawings" / f"{design}.svg").exists(), design
+            assert (fab / "drawings" / f"{design}.pdf").exists(), design
     for printable in ("camera_spacer", "cable_clip", "face_plate"):
         assert (fab / "stl" / f"{printable}.stl").exists()
     assert (fab / "assembly" / "robogene_head.step").exists()
@@ -61,13 +62,13 @@ def test_freecad_check_catches_a_wrong_step(fab, tmp_path):
     """The independent check is real: a STEP whose volume differs from what CadQuery reported fails."""
     from robogene_head import freecad
     step = fab / "step" / "neck_upright.step"
-    report = freecad.run([step], {"neck_upright": 1000.0}, [], tmp_path)
+    report = freecad.check_steps([step], {"neck_upright": 1000.0}, tmp_path / "check.json")
     (entry,) = report["files"]
     assert not entry["ok"] and "volume" in entry["problem"]
     broken = tmp_path / "step" / "broken.step"
     broken.parent.mkdir(parents=True, exist_ok=True)
     broken.write_text(step.read_text()[:2000])
-    report = freecad.run([broken], {"broken": 1.0}, [], tmp_path)
+    report = freecad.check_steps([broken], {"broken": 1.0}, tmp_path / "check.json")
     assert not report["files"][0]["ok"]
 
 
@@ -75,8 +76,6 @@ def test_drawings_are_svg_that_rasterise(fab, tmp_path):
     svgs = sorted((fab / "drawings").glob("*.svg"))
     assert svgs
     for svg in svgs:
-        text = svg.read_text()
-        assert "HOLES AND BORES" in text and "class=\"dim\"" in text, svg.name
         png = tmp_path / (svg.stem + ".png")
         subprocess.run(["rsvg-convert", "-d", "40", "-p", "40", "-o", str(png), str(svg)], check=True,
                        capture_output=True, timeout=60)
@@ -103,7 +102,8 @@ def test_renders_show_something(fab):
 
 
 def test_second_build_rebuilds_nothing(fab, tmp_path):
-    stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and p.suffix in (".step", ".stl", ".svg", ".png", ".glb")}
+    stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and
+             p.suffix in (".step", ".stl", ".svg", ".pdf", ".png", ".glb")}
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "mechanics"), str(REPO / "hardware" / "bom")]))
     # Same inputs as the build that made the package (make passes the board BOMs).
     sources = json.loads((fab / "bom" / "sources.json").read_text())

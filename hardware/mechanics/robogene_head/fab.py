@@ -87,7 +87,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     _remove_stale(out / "stl", {f"{d}.stl" for d, e in designs.items() if e["part"].kind == "printed"} |
                   {f"{s.stem}.stl" for s in openscad.sources()}, progress)
     machined_designs = {d for d, e in designs.items() if e["part"].kind == "machined"}
-    _remove_stale(out / "drawings", {f"{d}.svg" for d in machined_designs}, progress)
+    _remove_stale(out / "drawings", {f"{d}.{ext}" for d in machined_designs for ext in ("pdf", "svg")}, progress)
     geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
                           [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
 
@@ -164,23 +164,24 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     expected = {d["design"]: d["volume_mm3"] for d in summary}
     expected["robogene_head"] = round(sum(p.local.Volume() for p in parts), 3)
     solids = {"robogene_head": len(parts)}
-    densities = params.root.node("materials")
-    machined = [d["design"] for d in summary if d["kind"] == "machined"]
-    materials = {d["design"]: (d["material"], densities.num(d["material"])) for d in summary if d["kind"] == "machined"}
-    notes = {d: designs[d]["part"].note for d in machined if designs[d]["part"].note}
-    fc_key = digest(geometry_key, sorted(expected.items()), machined, sorted(notes.items()), freecad.script_digest())
-    fc_out = [out / "reports" / "freecad-step-check.json"] + [out / "drawings" / f"{d}.svg" for d in machined]
-    if not cache.fresh("freecad", fc_key, fc_out):
-        progress.note(f"FreeCAD: re-open {len(step_files)} STEP files, draw {len(machined)} machined parts")
+    check_report = out / "reports" / "freecad-step-check.json"
+    check_key = digest(geometry_key, sorted(expected.items()), freecad.check_digest())
+    if not cache.fresh("freecad-check", check_key, [check_report]):
+        progress.note(f"FreeCAD: re-open {len(step_files)} STEP files")
         try:
-            freecad.run(step_files, expected, machined, out, materials, solids, notes)
+            freecad.check_steps(step_files, expected, check_report, solids)
         except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
             raise BuildError(str(exc)) from None
-        cache.record("freecad", fc_key)
-    fc_report = json.loads(fc_out[0].read_text())
+        cache.record("freecad-check", check_key)
+    fc_report = json.loads(check_report.read_text())
     bad_steps = [r for r in fc_report["files"] if not r["ok"]]
     if bad_steps:
         raise BuildError("FreeCAD rejected: " + "; ".join(f"{r['file']}: {r['problem']}" for r in bad_steps))
+    densities = params.root.node("materials")
+    machined = [d for d in summary if d["kind"] == "machined"]
+    _draw_machined(out, cache, progress, [freecad.DrawingJob(
+        d["design"], out / "step" / f"{d['design']}.step", d["material"], densities.num(d["material"]),
+        designs[d["design"]]["part"].note or "", d["hash"][:8], f"step/{d['design']}.step") for d in machined])
 
     # 9. Renders at a few joint poses.
     render_out = [out / "renders" / f"{name}.png" for name, *_ in render.VIEWS]
@@ -209,6 +210,36 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     manifest = write_manifest(out, params_text)
     progress.note(f"done: {len(manifest['files'])} files in {out}")
     return manifest
+
+
+def _draw_machined(out: Path, cache: Cache, progress: Progress, jobs: list) -> None:
+    """TechDraw drawings (PDF + SVG) of the machined parts; only parts whose geometry, material, note or
+    drawing code changed are redrawn, all of them in one FreeCAD session. reports/drawings.json lists every
+    drawing's sheet, scale and dimensions."""
+    report_path = out / "reports" / "drawings.json"
+    try:
+        report = {d["name"]: d for d in json.loads(report_path.read_text())["drawings"]}
+    except (OSError, ValueError, KeyError):
+        report = {}
+    code = freecad.drawing_digest()
+    keys = {j.name: digest(j.name, j.material, j.density, j.note, j.revision, j.source, code) for j in jobs}
+    outputs = {j.name: [out / "drawings" / f"{j.name}.pdf", out / "drawings" / f"{j.name}.svg"] for j in jobs}
+    stale = [j for j in jobs if not (cache.fresh(f"drawing:{j.name}", keys[j.name], outputs[j.name]) and j.name in report)]
+    for i, j in enumerate(j for j in jobs if j not in stale):
+        progress.step("drawings", i, len(jobs), j.name, "unchanged")
+    done = len(jobs) - len(stale)
+    if stale:
+        progress.note(f"FreeCAD TechDraw: drawing {len(stale)} machined parts in one session")
+        try:
+            data = freecad.draw(stale, out / "drawings",
+                                on_progress=lambda i, n, line: progress.step("drawings", done + i, len(jobs), line))
+        except (RuntimeError, OSError) as exc:
+            raise BuildError(str(exc)) from None
+        for d in data["drawings"]:
+            report[d["name"]] = d
+            cache.record(f"drawing:{d['name']}", keys[d["name"]])
+    names = {j.name for j in jobs}
+    _write(report_path, json.dumps({"drawings": [report[n] for n in sorted(report) if n in names]}, indent=1))
 
 
 def _remove_stale(folder: Path, keep: set[str], progress: Progress) -> None:

@@ -1,0 +1,136 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The drawing's plan, without FreeCAD: which dimensions a view gets, and where the views go on the sheet."""
+import sys
+
+import pytest
+
+from conftest import REPO
+
+sys.path.insert(0, str(REPO / "hardware" / "mechanics" / "freecad"))
+import dimension_plan as dp  # noqa: E402
+import sheet_layout as sl  # noqa: E402
+
+
+def rectangle_with_holes():
+    """A 60 x 40 outline centred on the view, two Ø6 holes and one Ø3 hole (TechDraw order: corners first,
+    then per circle its seam point twice and its centre)."""
+    vertices = [(-30, -20), (-30, 20), (30, -20), (30, 20)]
+    circles = []
+    for i, (x, y, r) in enumerate([(-20, -12, 3), (20, -12, 3), (5, 10, 1.5)]):
+        vertices += [(x + r, y), (x + r, y), (x, y)]
+        circles.append(dp.Circle(4 + i, x, y, r))
+    ext = {"xmin": dp.Extreme(-30, (-30, 0)), "xmax": dp.Extreme(30, (30, 0)),
+           "ymin": dp.Extreme(-20, (0, -20)), "ymax": dp.Extreme(20, (0, 20))}
+    return vertices, circles, ext
+
+
+def test_extents_run_between_the_outermost_vertices_nearest_the_dimension_line():
+    vertices, circles, ext = rectangle_with_holes()
+    plan = dp.plan(vertices, circles, ext, ("X", "Y"))
+    (across,) = [d for d in plan.dims if d.kind == "extent" and d.type == "DistanceX"]
+    (up,) = [d for d in plan.dims if d.kind == "extent" and d.type == "DistanceY"]
+    assert across.value == 60 and across.axis == "X" and across.side == "below"
+    # the lower corners: the dimension sits below the view
+    assert across.refs == [("vertex", 0), ("vertex", 2)]
+    assert up.value == 40 and up.refs == [("vertex", 0), ("vertex", 1)]
+    # the overall extent is the outermost line of its stack
+    assert across.row == max(d.row for d in plan.dims if d.side == "below")
+
+
+def test_hole_positions_are_measured_from_the_datum_edges_once_per_coordinate():
+    vertices, circles, ext = rectangle_with_holes()
+    plan = dp.plan(vertices, circles, ext, ("X", "Y"))
+    across = sorted(d.value for d in plan.dims if d.kind == "position" and d.type == "DistanceX")
+    up = sorted(d.value for d in plan.dims if d.kind == "position" and d.type == "DistanceY")
+    assert across == [10, 35, 50]      # x = -20, 5, 20 from the left edge at -30
+    assert up == [8, 30]               # y = -12 (two holes), 10 from the bottom edge at -20
+    for d in plan.dims:
+        if d.kind == "position":
+            assert d.refs[0] == ("vertex", 0)                       # the datum corner
+            assert d.refs[1][0] == "vertex" and vertices[d.refs[1][1]] in [(c.x, c.y) for c in circles]
+
+
+def test_one_diameter_per_size_with_its_count():
+    vertices, circles, ext = rectangle_with_holes()
+    plan = dp.plan(vertices, circles, ext)
+    diameters = {(d.prefix, d.value) for d in plan.dims if d.kind == "diameter"}
+    assert diameters == {("2× ", 6), ("", 3)}
+    assert all(d.refs[0][0] == "edge" for d in plan.dims if d.kind == "diameter")
+
+
+def test_a_round_outline_is_given_by_its_diameter_and_is_the_datum():
+    vertices = [(5.0, 0.0), (5.0, 0.0), (0.0, 0.0), (1.5, 0.0), (1.5, 0.0)]
+    circles = [dp.Circle(0, 0, 0, 5.0), dp.Circle(1, 0, 0, 1.5)]
+    ext = {"xmin": dp.Extreme(-5, (-5, 0)), "xmax": dp.Extreme(5, (5, 0)),
+           "ymin": dp.Extreme(-5, (0, -5)), "ymax": dp.Extreme(5, (0, 5))}
+    plan = dp.plan(vertices, circles, ext)
+    assert [d.kind for d in plan.dims] == ["diameter", "diameter"]    # concentric: no position, no linear extent
+    assert sorted(d.value for d in plan.dims) == [3.0, 10.0]
+
+
+def test_an_extreme_on_a_curve_without_a_vertex_gets_a_point():
+    # a slot end: the outline reaches x = 34 on an arc whose ends are at x = 30
+    vertices = [(-30, -4), (-30, 4), (30, -4), (30, 4)]
+    ext = {"xmin": dp.Extreme(-30, (-30, 0)), "xmax": dp.Extreme(34, (34, 0)),
+           "ymin": dp.Extreme(-4, (0, -4)), "ymax": dp.Extreme(4, (0, 4))}
+    plan = dp.plan(vertices, [], ext)
+    (across,) = [d for d in plan.dims if d.type == "DistanceX"]
+    assert across.value == 64 and across.refs == [("vertex", 0), ("point", (34, 0))]
+
+
+def test_diameter_labels_do_not_overlap():
+    # four sizes of hole close together: their texts must end up in four separate places
+    circles = [dp.Circle(i, 20 + 0.5 * i, 20, 1 + 0.5 * i) for i in range(4)]
+    vertices = [(-30, -30), (-30, 30), (30, -30), (30, 30)] + [(c.x, c.y) for c in circles]
+    ext = {"xmin": dp.Extreme(-30, (-30, 0)), "xmax": dp.Extreme(30, (30, 0)),
+           "ymin": dp.Extreme(-30, (0, -30)), "ymax": dp.Extreme(30, (0, 30))}
+    plan = dp.plan(vertices, circles, ext)
+    dp.place_labels(plan, 1.0)
+    boxes = [dp._label_box(d, 1.0) for d in plan.dims if d.kind == "diameter"]
+    assert len(boxes) == 4
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert not dp._overlap(a, b)
+
+
+def boxes_for(x, y, z):
+    """ViewBoxes of a part x by y by z mm centred on its views: the front and left views carry their
+    extents, the top view also hole positions and diameters."""
+    plain = dict(left=12, below=12)
+    holes = dict(left=21, below=21, above=14, right=14)
+    iso_w, iso_h = (x + y) * 0.707 / 2, ((x + y) * 0.408 + z * 0.816) / 2
+    return {"front": sl.ViewBox(-x / 2, x / 2, -z / 2, z / 2, **plain), "left": sl.ViewBox(-y / 2, y / 2, -z / 2, z / 2, **plain),
+            "top": sl.ViewBox(-x / 2, x / 2, -y / 2, y / 2, **holes), "iso": sl.ViewBox(-iso_w, iso_w, -iso_h, iso_h)}
+
+
+@pytest.mark.parametrize("size, sheet, scale", [
+    ((11.5, 11.5, 6), "A4", 5.0),        # a small pulley: enlarged on A4
+    ((44, 12, 62.5), "A4", 1.0),         # an upright: full size on A4
+    ((130, 110, 8), "A3", 1.0),          # a base plate: A4 would need 1:2, A3 takes it full size
+    ((400, 300, 300), "A3", 0.2),        # too big for A3 at 1:2
+])
+def test_sheet_and_scale_follow_the_part_size(size, sheet, scale):
+    layout = sl.choose(boxes_for(*size))
+    assert (layout.sheet.name, layout.scale) == (sheet, scale)
+    frame = layout.sheet.border
+    tb = layout.sheet.title_block
+    boxes = list(layout.boxes.values())
+    assert len(boxes) == 4
+    for i, b in enumerate(boxes):
+        assert frame[0] <= b[0] and b[2] <= frame[2] and frame[1] <= b[1] and b[3] <= frame[3]
+        assert not sl._overlap(b, (tb[0], tb[1], tb[2], layout.notes[3]))
+        for other in boxes[i + 1:]:
+            assert not sl._overlap(b, other)
+    # first-angle arrangement: the left view right of the front, the top view below it, both aligned
+    (fx, fy), (lx, ly), (tx, ty) = (layout.centres[v] for v in ("front", "left", "top"))
+    assert lx > fx and ly == fy and tx == fx and ty < fy
+
+
+def test_a_part_too_big_for_a3_is_refused():
+    with pytest.raises(ValueError, match="A3"):
+        sl.choose(boxes_for(5000, 4000, 3000))
+
+
+def test_scale_labels():
+    assert [sl.scale_label(s) for s in (5.0, 1.0, 0.5, 0.2)] == ["5:1", "1:1", "1:2", "1:5"]

@@ -1,0 +1,224 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The machined parts' drawings are real FreeCAD TechDraw pages, and the dimensions printed on them are
+right: checked against the STEP files read independently (CadQuery/OpenCASCADE), and on a test part
+whose dimensions are known."""
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import cadquery as cq
+import pytest
+from OCP.Bnd import Bnd_Box
+from OCP.BRepAdaptor import BRepAdaptor_Surface
+from OCP.BRepBndLib import BRepBndLib
+from OCP.BRepLProp import BRepLProp_SLProps
+from OCP.GeomAbs import GeomAbs_Cylinder
+from OCP.TopAbs import TopAbs_REVERSED
+
+from robogene_head import freecad
+
+NUMBER = re.compile(r"(?<![\d.])\d+(?:\.\d+)?")
+DIAMETER = re.compile(r"⌀\s*(\d+(?:\.\d+)?)")
+
+
+def pdf_text(pdf: Path) -> str:
+    return subprocess.run(["pdftotext", "-raw", str(pdf), "-"], capture_output=True, text=True, check=True,
+                          timeout=60).stdout
+
+
+def svg_text(svg: Path) -> str:
+    return "\n".join(t for t in re.findall(r">([^<>]+)</t", svg.read_text()) if t.strip())
+
+
+def numbers(text: str) -> list:
+    return [float(n) for n in NUMBER.findall(text)]
+
+
+def exact_extents(step: Path) -> tuple:
+    """Size along X, Y, Z from OpenCASCADE's optimal bounding box (no tolerance gap, curves exact)."""
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(cq.importers.importStep(str(step)).val().wrapped, box, False, False)
+    x0, y0, z0, x1, y1, z1 = box.Get()
+    return x1 - x0, y1 - y0, z1 - z0
+
+
+def cylinders(step: Path) -> list:
+    """(diameter, is_hole) of every cylindrical face: a hole's material lies outside its radius."""
+    out = []
+    for face in cq.importers.importStep(str(step)).val().Faces():
+        surf = BRepAdaptor_Surface(face.wrapped)
+        if surf.GetType() != GeomAbs_Cylinder:
+            continue
+        u = (surf.FirstUParameter() + surf.LastUParameter()) / 2
+        v = (surf.FirstVParameter() + surf.LastVParameter()) / 2
+        props = BRepLProp_SLProps(surf, u, v, 1, 1e-6)
+        normal = props.Normal()
+        if face.wrapped.Orientation() == TopAbs_REVERSED:
+            normal.Reverse()
+        cyl = surf.Cylinder()
+        p, o, a = props.Value(), cyl.Location(), cyl.Axis().Direction()
+        d = [p.X() - o.X(), p.Y() - o.Y(), p.Z() - o.Z()]
+        along = d[0] * a.X() + d[1] * a.Y() + d[2] * a.Z()
+        radial = (d[0] - along * a.X(), d[1] - along * a.Y(), d[2] - along * a.Z())
+        dot = radial[0] * normal.X() + radial[1] * normal.Y() + radial[2] * normal.Z()
+        out.append((2 * cyl.Radius(), dot < 0))
+    return out
+
+
+def missing(wanted, printed, tol=0.1) -> list:
+    return [w for w in wanted if not any(abs(w - p) <= tol for p in printed)]
+
+
+@pytest.fixture(scope="module")
+def machined(assembly):
+    return sorted({p.design for p in assembly.parts if p.kind == "machined"})
+
+
+def test_every_machined_part_has_a_pdf_and_an_svg_drawing(fab, machined):
+    drawings = fab / "drawings"
+    assert sorted(p.stem for p in drawings.glob("*.pdf")) == machined
+    assert sorted(p.stem for p in drawings.glob("*.svg")) == machined
+    for name in machined:
+        assert (drawings / f"{name}.pdf").read_bytes().startswith(b"%PDF"), name
+        assert "FreeCAD SVG Export" in (drawings / f"{name}.svg").read_text(), name
+
+
+def test_the_overall_extents_printed_are_those_of_the_step(fab, machined):
+    for name in machined:
+        extents = exact_extents(fab / "step" / f"{name}.step")
+        for text in (pdf_text(fab / "drawings" / f"{name}.pdf"), svg_text(fab / "drawings" / f"{name}.svg")):
+            assert missing(extents, numbers(text)) == [], (name, extents, numbers(text))
+
+
+def test_hole_diameters_are_printed_and_every_diameter_is_a_real_one(fab, machined):
+    for name in machined:
+        cyl = cylinders(fab / "step" / f"{name}.step")
+        printed = sorted(float(d) for d in DIAMETER.findall(pdf_text(fab / "drawings" / f"{name}.pdf")))
+        assert printed == sorted(float(d) for d in DIAMETER.findall(svg_text(fab / "drawings" / f"{name}.svg"))), name
+        holes = [d for d, hole in cyl if hole]
+        if holes:
+            assert any(abs(p - h) <= 0.01 for p in printed for h in holes), (name, holes, printed)
+        # every ⌀ on the sheet is the diameter of a cylinder of the part, or of its round outline
+        outline = max(exact_extents(fab / "step" / f"{name}.step")[:2])
+        assert missing(printed, [d for d, _ in cyl] + [outline], tol=0.01) == [], (name, printed, cyl)
+
+
+def test_the_report_lists_the_techdraw_dimensions_of_each_view(fab, machined):
+    report = {d["name"]: d for d in json.loads((fab / "reports" / "drawings.json").read_text())["drawings"]}
+    assert sorted(report) == machined
+    for name in machined:
+        entry = report[name]
+        assert entry["sheet"] in ("A4", "A3") and entry["pdf"] == f"{name}.pdf"
+        views = {d["view"] for d in entry["dimensions"]}
+        assert views == {"front", "left", "top"}, name
+        printed = numbers(pdf_text(fab / "drawings" / f"{name}.pdf"))
+        assert missing([d["value"] for d in entry["dimensions"]], printed, tol=0.006) == [], name
+
+
+def test_the_title_block_and_notes_are_filled(fab, machined, params):
+    report = {d["name"]: d for d in json.loads((fab / "reports" / "drawings.json").read_text())["drawings"]}
+    parts = json.loads((fab / "parts.json").read_text())
+    materials = {p["design"]: p["material"] for p in parts}
+    for name in machined:
+        text = svg_text(fab / "drawings" / f"{name}.svg")
+        scale = report[name]["scale"]
+        label = f"{scale:g}:1" if scale >= 1 else f"1:{1 / scale:g}"
+        for field in (name, materials[name], label, "CERN-OHL-S-2.0", f"step/{name}.step", "UNITS: mm",
+                      "FIRST-ANGLE PROJECTION", report[name]["sheet"]):
+            assert field in text, (name, field)
+
+
+@pytest.fixture(scope="module")
+def known_parts(tmp_path_factory):
+    """Two parts of known size drawn in one FreeCAD session:
+    - a 60 x 40 x 12 block with Ø6.6 and Ø4.5 holes through its top and a Ø3 hole through its front;
+    - a 50 x 16 x 6 slot-shaped plate (round ends, so no vertex at its left and right extremes) with a
+      Ø5 hole in the middle."""
+    folder = tmp_path_factory.mktemp("known")
+    block = cq.Solid.makeBox(60, 40, 12)
+    for d, at, axis, length in ((6.6, (10, 8, 0), (0, 0, 1), 12), (4.5, (45, 30, 0), (0, 0, 1), 12),
+                                (3.0, (30, 0, 6), (0, 1, 0), 40)):
+        block = block.cut(cq.Solid.makeCylinder(d / 2, length, cq.Vector(*at), cq.Vector(*axis)))
+    cq.exporters.export(cq.Workplane().add(block), str(folder / "test_block.step"))
+    slot = cq.Workplane("XY").slot2D(50, 16).extrude(6).faces(">Z").workplane().hole(5)
+    cq.exporters.export(slot, str(folder / "test_slot.step"))
+    data = freecad.draw([freecad.DrawingJob(n, folder / f"{n}.step", "aluminium-6082", 2700.0)
+                         for n in ("test_block", "test_slot")], folder / "drawings")
+    return {d["name"]: d for d in data["drawings"]}, folder / "drawings"
+
+
+def dimension_set(entry) -> set:
+    return {(d["view"], d["kind"], d["type"], round(d["value"], 3)) for d in entry["dimensions"]}
+
+
+def test_a_part_of_known_size_is_dimensioned_exactly(known_parts):
+    """Every extent, diameter and hole position must be printed, positions from the left and bottom edges."""
+    drawings, folder = known_parts
+    assert dimension_set(drawings["test_block"]) == {
+        ("front", "extent", "DistanceX", 60), ("front", "extent", "DistanceY", 12),
+        ("left", "extent", "DistanceX", 40), ("left", "extent", "DistanceY", 12),
+        ("top", "extent", "DistanceX", 60), ("top", "extent", "DistanceY", 40),
+        ("top", "position", "DistanceX", 10), ("top", "position", "DistanceX", 45),
+        ("top", "position", "DistanceY", 8), ("top", "position", "DistanceY", 30),
+        ("top", "diameter", "Diameter", 6.6), ("top", "diameter", "Diameter", 4.5),
+        ("front", "position", "DistanceX", 30), ("front", "position", "DistanceY", 6),
+        ("front", "diameter", "Diameter", 3),
+    }
+    text = pdf_text(folder / "test_block.pdf")
+    assert sorted(float(d) for d in DIAMETER.findall(text)) == [3.0, 4.5, 6.6]
+    assert missing([60, 40, 12, 10, 45, 8, 30, 6], numbers(text), tol=1e-9) == []
+    # and a sheet that printed 60 where 60.6 was due would be caught
+    assert missing([60.6], numbers(text)) == [60.6]
+
+
+def test_an_extreme_on_a_curve_is_dimensioned_to_the_curve(known_parts):
+    """The slot's ends are arcs: its length runs to their apexes (cosmetic vertices), not to the arcs' ends."""
+    drawings, folder = known_parts
+    assert dimension_set(drawings["test_slot"]) == {
+        ("front", "extent", "DistanceX", 50), ("front", "extent", "DistanceY", 6),
+        ("left", "extent", "DistanceX", 16), ("left", "extent", "DistanceY", 6),
+        ("top", "extent", "DistanceX", 50), ("top", "extent", "DistanceY", 16),
+        ("top", "position", "DistanceX", 25), ("top", "position", "DistanceY", 8),
+        ("top", "diameter", "Diameter", 5),
+    }
+    assert missing([50, 16, 6, 25, 8], numbers(pdf_text(folder / "test_slot.pdf")), tol=1e-9) == []
+
+
+def test_a_missing_step_is_reported_by_name(tmp_path):
+    with pytest.raises(RuntimeError, match="no_such_part"):
+        freecad.draw([freecad.DrawingJob("no_such_part", tmp_path / "no_such_part.step")], tmp_path / "drawings")
+
+
+def test_only_changed_parts_are_redrawn(tmp_path, monkeypatch):
+    """The build's cache: a second run draws nothing; a part whose geometry changed is drawn alone."""
+    import io
+
+    from robogene_head import fab
+    from robogene_head.cache import Cache
+    from robogene_head.progress import Progress
+
+    sessions = []
+
+    def fake_draw(jobs, folder, on_progress=None, timeout=None):
+        sessions.append([j.name for j in jobs])
+        for i, j in enumerate(jobs):
+            for ext in ("pdf", "svg"):
+                (folder / f"{j.name}.{ext}").parent.mkdir(parents=True, exist_ok=True)
+                (folder / f"{j.name}.{ext}").write_text(j.revision)
+            on_progress(i, len(jobs), f"drawn {j.name}")
+        return {"drawings": [{"name": j.name, "dimensions": []} for j in jobs]}
+
+    monkeypatch.setattr(freecad, "draw", fake_draw)
+    jobs = [freecad.DrawingJob(n, tmp_path / f"{n}.step", "aluminium-6082", 2700.0, "", "rev1") for n in ("a", "b", "c")]
+    log = io.StringIO()
+    for _ in range(2):
+        fab._draw_machined(tmp_path, Cache(tmp_path / "state.json"), Progress(log), jobs)
+    jobs[1] = freecad.DrawingJob("b", tmp_path / "b.step", "aluminium-6082", 2700.0, "", "rev2")
+    fab._draw_machined(tmp_path, Cache(tmp_path / "state.json"), Progress(log), jobs)
+    assert sessions == [["a", "b", "c"], ["b"]]
+    assert (tmp_path / "drawings" / "b.pdf").read_text() == "rev2"
+    report = json.loads((tmp_path / "reports" / "drawings.json").read_text())
+    assert [d["name"] for d in report["drawings"]] == ["a", "b", "c"]
+    assert "unchanged" in log.getvalue() and "drawn b" in log.getvalue()
