@@ -8,6 +8,8 @@ from ..params import HeadParameters
 from . import mounts, neck, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
+SIDE_NOTE = "Front edge: 2 x M3 tapped 8 deep (tap drill 2.5), drawn at 3.0"
+
 
 def build(params: HeadParameters) -> list[Part]:
     h = params.geometry("head")
@@ -33,8 +35,9 @@ def build(params: HeadParameters) -> list[Part]:
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
                     geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
                     geom.cyl("y", 8, inner - 1, hw + 1, (tmx, tmz)),
-                    # M3 tapped holes (2.5 mm tap drill, 8 deep) for the OpenSCAD face plate
-                    *[geom.cyl("x", 2.5, sx1 - 8, sx1 + 1, (inner + st / 2, z)) for z in face_z])
+                    # M3 tapped holes for the face plate screws, modelled at the thread's size like every
+                    # tapped hole of the head (the drawing's note gives the tap drill)
+                    *[geom.cyl("x", 3.0, sx1 - 8, sx1 + 1, (inner + st / 2, z)) for z in face_z])
     side = geom.single_solid(side, "side plate")
     side_right = side.mirror("XZ")
     back = geom.box(x0, x0 + bt, -inner, inner, 0, bh)
@@ -42,8 +45,8 @@ def build(params: HeadParameters) -> list[Part]:
 
     parts = [
         Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"), **al),
-        Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side, **al),
-        Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right, **al),
+        Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side, note=SIDE_NOTE, **al),
+        Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right, note=SIDE_NOTE, **al),
         Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, **al),
         Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, **al),
         purchased.bearing(params, "neck_yaw_bearing", params.drive("neck_yaw").text("bearing"), "head_frame",

@@ -10,6 +10,7 @@ from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
 STANDOFF = "standoff-M3x46-FF"
+UPRIGHT_NOTE = "Bottom face: 2 x M3 tapped 6 deep (tap drill 2.5), drawn at 3.0"
 
 
 def _base(params: HeadParameters) -> list[Part]:
@@ -50,9 +51,10 @@ def _base(params: HeadParameters) -> list[Part]:
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_base_flange", "neck_base_flange", "neck_base", "machined", geom.single_solid(flange, "flange"),
              loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM),
-        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM,
+             note=UPRIGHT_NOTE),
         Part("neck_upright_right", "neck_upright", "neck_base", "machined", upright, loc(rz=180),
-             material="aluminium-6082", color=ALUMINIUM),
+             material="aluminium-6082", color=ALUMINIUM, note=UPRIGHT_NOTE),
     ]
     for i, (x, y) in enumerate(corners):
         parts.append(purchased.standoff(params, f"base_standoff_{i}", STANDOFF, "neck_base", loc(x, y, -T - bay)))
