@@ -52,6 +52,10 @@ def test_every_screw_joins_two_parts(held):
     ("face_plate", "head_side_plate_left"), ("face_plate", "head_side_plate_right"),
     ("neck_pitch_motor_mount", "neck_upright_left"), ("neck_roll_motor_mount", "neck_pitch_stage"),
     ("neck_yaw_motor_mount", "head_floor"),
+    # every gearhead hangs on four M2 through the plate its flange bears on
+    ("neck_pitch_motor_mount", "neck_pitch_gearhead"), ("neck_roll_motor_mount", "neck_roll_gearhead"),
+    ("neck_yaw_motor_mount", "neck_yaw_gearhead"), ("head_side_plate_left", "eyes_tilt_gearhead"),
+    ("eyes_tilt_frame", "left_eye_pan_gearhead"), ("eyes_tilt_frame", "right_eye_pan_gearhead"),
 ])
 def test_the_parts_the_guide_bolts_are_bolted(held, a, b):
     screws = [name for name, parts in held.items() if a in parts and b in parts]
@@ -70,3 +74,22 @@ def test_the_yaw_motor_mount_slides_to_tension_the_belt(params, assembly):
             assert moved.intersect(screw.shape).Volume() < 1e-6, (dx, screw.name)
     # ... and not further: 1.5 mm along x closes the slot on every shank
     assert all(plate.shape.moved(loc(1.5, 0, 0)).intersect(s.shape).Volume() > 0.1 for s in screws)
+    # The gearhead's screw heads under the plate move along in their slotted pockets in the floor.
+    floor = next(p for p in assembly.parts if p.name == "head_floor")
+    heads = [p for p in assembly.parts if p.name.startswith("neck_yaw_gearhead_screw_")]
+    assert len(heads) == 4
+    for dx in (-0.9, 0.9):
+        for screw in heads:
+            assert screw.shape.moved(loc(dx, 0, 0)).intersect(floor.shape).Volume() < 1e-6, (dx, screw.name)
+
+
+def test_a_screw_too_long_for_the_gearhead_threads_is_named(params, external, tmp_path):
+    import yaml
+    from robogene_head.params import ParameterError, load
+    from robogene_head.parts import build_all
+    data = yaml.safe_load(params.path.read_text())
+    data["purchased"]["iso4762-M2x8"]["length"] = 12
+    path = tmp_path / "long-screws.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ParameterError, match=r"purchased\.iso4762-M2x8: reaches 8.2 mm into eyes_tilt's gearhead"):
+        build_all(load(path), external)

@@ -13,7 +13,7 @@ import cadquery as cq
 
 from .. import geom
 from ..params import HeadParameters
-from . import purchased
+from . import gearhead_screws, purchased
 from .base import Part, loc
 
 M3, M2 = "iso7380-M3x12", "iso4762-M2x10"
@@ -27,9 +27,9 @@ TOP_SIDE_DX = (-3.5, 3.5)         # and into the top bar's ends, either side of 
 # Drawing notes: what the drawn holes of each part are.
 NOTES = {
     "head_floor": "3.4 / 2.4: clearance for the side and back plates' M3 / M2; 4 x M3 tapped through (tap drill 2.5), "
-                  "drawn at 3.0, for the yaw motor mount",
-    "head_side_plate": "M3 tapped 8 deep (tap drill 2.5) in front and bottom edges, drawn at 3.0; "
-                       "2.4 through for M2",
+                  "drawn at 3.0, for the yaw motor mount; 4.4 x 6.4 slots 2.2 deep for its gearhead screws' heads",
+    "head_side_plate": "M3 tapped 8 deep (tap drill 2.5) in front and bottom edges, drawn at 3.0; 2.4 through for "
+                       "M2; at the tilt motor hole " + gearhead_screws.NOTE,
     "head_back_plate": "M2 tapped 8 deep (tap drill 1.6) in bottom and side edges, drawn at 2.0",
     "head_top_bar": "4 x M2 tapped 8 deep (tap drill 1.6) in the ends, drawn at 2.0",
 }

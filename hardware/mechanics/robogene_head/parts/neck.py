@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
-from . import mounts, purchased
+from . import gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -13,7 +13,7 @@ STANDOFF = "standoff-M3x46-FF"
 UPRIGHT_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer face "
                 "for the pitch motor mount (unused on the right upright)")
 PITCH_STAGE_NOTE = "Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount"
-MOUNT_NOTE = "3.4 holes: M3 fixing screws; 4 x 2.2 on the gearhead's bolt circle"
+MOUNT_NOTE = "3.4 holes: M3 fixing screws. " + gearhead_screws.NOTE
 # Pitch motor mount on the left upright's outer face: plate outline and its four M3 fixings, in the plate's frame
 # (x along the head's x, y down the upright).
 PITCH_MOUNT = (-20.0, 20.0, -18.0, 18.0)
@@ -84,6 +84,7 @@ def _base(params: HeadParameters) -> list[Part]:
     mount = mounts.mount_plate(PITCH_MOUNT, 4, 8, gear.num("diameter"), PITCH_FIXINGS)
     parts.append(Part("neck_pitch_motor_mount", "motor_mount_neck_pitch", "neck_base", "machined", mount,
                       loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
+    parts += gearhead_screws.screws(params, "neck_pitch", "neck_base", loc(0, y_out, hp, rx=-90), gear.num("diameter"), 4)
     for i, (fx, fy) in enumerate(PITCH_FIXINGS):   # heads on the plate, shanks into the upright (-y)
         parts.append(purchased.screw(params, f"pitch_mount_screw_{i}", mounts.FIXING_SCREW, "neck_base",
                                      loc(fx, y_out + 4, hp - fy, rx=90)))
@@ -132,6 +133,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
                       mounts.mount_plate((bottom, rd / 2, -lw / 2, lw / 2), 4, 8, rd, ROLL_FIXINGS),
                       loc(-x_out, 0, zr, ry=-90),
                       material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
+    parts += gearhead_screws.screws(params, "neck_roll", "neck_pitch_link", loc(-x_out, 0, zr, ry=-90), rd, 4)
     for i, (fx, fy) in enumerate(ROLL_FIXINGS):   # heads on the plate, shanks into the lug (+x)
         parts.append(purchased.screw(params, f"roll_mount_screw_{i}", mounts.FIXING_SCREW, "neck_pitch_link",
                                      loc(-x_out - 4, fy, zr + fx, ry=90)))
