@@ -3,7 +3,6 @@
 """The assembly places KiCad's board STEP once per motor-control board, in the neck base's board bay: the
 geometry matches the STEP read back here with OpenCASCADE's own reader, the boards join the interference
 check and the mass properties, and a missing or wrong STEP stops the build with a message naming it."""
-import copy
 import json
 import subprocess
 import sys
