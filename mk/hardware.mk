@@ -4,13 +4,14 @@
 # Head mechanics, BOM and fabrication package (hardware/mechanics, hardware/bom -> build/fab).
 # `make fab` builds the package; inside it every output is keyed by a content hash, so only what changed is
 # rebuilt. BOARD_BOMS: CSV BOMs of the KiCad boards (Reference, Value, Footprint, MPN, Qty) merged into the
-# BOM, each boards.count times per head (PATH:N for another count). By default: the motor board's BOM from
-# mk/electronics.mk, which is then built first.
+# BOM, each boards.count times per head (PATH:N for another count). BOARD_STEP: the motor board's STEP, placed
+# boards.count times in the assembly. By default both come from mk/electronics.mk, which is then built first.
 
 FAB        := $(BUILD)/fab
 HW_PY      := PYTHONPATH=$(ROOT)/hardware/mechanics:$(ROOT)/hardware/bom $(PY)
 ifdef ELEC_FAB
 BOARD_BOMS   ?= $(ELEC_FAB)/bom.csv
+BOARD_STEP   ?= $(ELEC_FAB)/board.step
 HW_BOARD_DEP := $(ELEC_FAB)/.stamp
 endif
 HW_SOURCES := hardware/head-parameters.yaml $(shell find hardware/mechanics hardware/bom -type f \
@@ -29,8 +30,9 @@ $(STAMPS)/py-hardware: tools/setup/requirements-hardware.txt $(VENV)/.stamp | $(
 	$(PY) -m pip install -q --disable-pip-version-check -r $<
 	touch $@
 
-$(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS)) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
-	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b))
+$(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS) $(BOARD_STEP)) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
+	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b)) \
+	  $(if $(BOARD_STEP),--board-step $(BOARD_STEP))
 
 .PHONY: fab test-hardware
 ALL_TARGETS  += fab

@@ -115,12 +115,18 @@ def test_malformed_board_bom_is_named(tmp_path):
 
 def test_package_bom_files(fab, params, assembly):
     import json
-    from pathlib import Path
     rows = list(csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open()))
     qty = {r["key"]: int(r["qty_per_head"]) for r in rows}
     expected = Counter(p.design for p in assembly.parts if p.kind == "purchased") + Counter(
         {k: 1 for k, _, _ in mounts.belts(params)})
     sources = json.loads((fab / "bom" / "sources.json").read_text())
+    # The package merged the motor board's BOM once per board in the assembly, with one bare PCB each.
+    copies = int(params.root.node("boards").num("count"))
+    assert [b["copies"] for b in sources["board_boms"]] == [copies] and copies == 3
+    assert sum(1 for p in assembly.parts if p.kind == "board") == copies
+    assert qty[params.root.node("boards").text("pcb")] == copies
+    board_rows = list(csv.DictReader(open(sources["board_boms"][0]["path"], encoding="utf-8-sig")))
+    assert len(board_rows) > 20
     by_mpn = catalog.load(sources["catalog"]).by_mpn()
     for b in sources["board_boms"]:   # recount the board parts straight from the KiCad CSV
         for row in csv.DictReader(open(b["path"], encoding="utf-8-sig")):

@@ -31,6 +31,9 @@ def test_manifest_checksums_match(fab):
 def test_every_part_has_its_files(fab, assembly):
     designs = {p.design: p for p in assembly.parts}
     for design, part in designs.items():
+        if part.kind == "board":   # the board's STEP is the electronics package's (test_boards.py)
+            assert not (fab / "step" / f"{design}.step").exists()
+            continue
         assert (fab / "step" / f"{design}.step").stat().st_size > 1000, design
         if part.kind == "printed":
             assert (fab / "stl" / f"{design}.stl").exists(), design
@@ -42,20 +45,48 @@ def test_every_part_has_its_files(fab, assembly):
     assert (fab / "assembly" / "robogene_head.step").exists()
 
 
-def test_glb_loads_with_every_part(fab, assembly):
+# glTF is y-up: its (x, y, z) is the head's (x, z, -y)
+GLTF_TO_HEAD = np.array([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 0, 1]], dtype=float)
+
+
+def test_glb_holds_every_part_where_the_assembly_puts_it(fab, assembly):
+    """One node per part instance (so every design is there), each with meshes that fill the part's bounding box
+    at the zero pose."""
     import trimesh
     scene = trimesh.load(str(fab / "assembly" / "robogene_head.glb"))
-    assert len(scene.geometry) >= len({p.design for p in assembly.parts}) // 2
-    lo, hi = scene.bounds
-    assert np.all(hi - lo > 100)   # a head-sized scene, in mm
+    graph = scene.graph
+    children = {}
+    for parent, child, _ in graph.to_edgelist():
+        children.setdefault(parent, []).append(child)
+    assert set(children["robogene_head"]) == {p.name for p in assembly.parts}
+    assert {p.design for p in assembly.parts} == {p.design for p in assembly.parts if p.name in children["robogene_head"]}
+    for placed in assembly.pose({}):
+        stack, meshes = [placed.part.name], []
+        while stack:
+            node = stack.pop()
+            stack += children.get(node, [])
+            transform, geometry = graph[node]
+            if geometry is not None:
+                meshes.append(scene.geometry[geometry].copy().apply_transform(GLTF_TO_HEAD @ transform))
+        assert meshes, placed.part.name
+        lo = np.min([m.bounds[0] for m in meshes], axis=0)
+        hi = np.max([m.bounds[1] for m in meshes], axis=0)
+        bb = placed.shape.BoundingBox()
+        # meshes lie on the surfaces: their box is inside the exact one, short of it by the chordal deviation
+        assert np.allclose(lo, [bb.xmin, bb.ymin, bb.zmin], atol=0.5), placed.part.name
+        assert np.allclose(hi, [bb.xmax, bb.ymax, bb.zmax], atol=0.5), placed.part.name
 
 
 def test_freecad_reopened_every_step(fab, assembly):
     report = json.loads((fab / "reports" / "freecad-step-check.json").read_text())
     files = {r["file"]: r for r in report["files"]}
-    assert set(files) == {f"{d}.step" for d in {p.design for p in assembly.parts}} | {"robogene_head.step"}
+    assert set(files) == {f"{d}.step" for d in {p.design for p in assembly.parts if p.kind != "board"}} | \
+        {"robogene_head.step"}
     assert all(r["ok"] for r in files.values()), [r for r in files.values() if not r["ok"]]
-    assert files["robogene_head.step"]["solids"] == len(assembly.parts)
+    # one solid per part, and the board's PCB body and component models three times over
+    boards = [p for p in assembly.parts if p.kind == "board"]
+    assert len(boards) == 3 and all(p.expected_solids > 10 for p in boards)
+    assert files["robogene_head.step"]["solids"] == len(assembly.parts) - 3 + sum(p.expected_solids for p in boards)
 
 
 def test_freecad_check_catches_a_wrong_step(fab, tmp_path):
@@ -105,9 +136,10 @@ def test_second_build_rebuilds_nothing(fab, tmp_path):
     stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and
              p.suffix in (".step", ".stl", ".svg", ".pdf", ".png", ".glb")}
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "mechanics"), str(REPO / "hardware" / "bom")]))
-    # Same inputs as the build that made the package (make passes the board BOMs).
+    # Same inputs as the build that made the package (make passes the board BOMs and the board STEP).
     sources = json.loads((fab / "bom" / "sources.json").read_text())
     boards = [arg for b in sources["board_boms"] for arg in ("--board-bom", f"{b['path']}:{b['copies']}")]
+    boards += ["--board-step", json.loads((fab / "manifest.json").read_text())["board_step"]["path"]]
     before = (fab / "bom" / "robogene-head-bom.csv").read_bytes()
     result = subprocess.run([sys.executable, "-m", "robogene_head.fab", "--out", str(fab), "--batch", str(sources["batch"]),
                              *boards], capture_output=True, text=True, env=env, timeout=900)

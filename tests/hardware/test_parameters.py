@@ -73,11 +73,11 @@ def test_yaml_syntax_error_has_line_and_column(tmp_path):
     assert str(info.value).startswith(f"{bad}:2:")
 
 
-def test_geometry_problem_is_reported_by_key(raw, tmp_path):
+def test_geometry_problem_is_reported_by_key(raw, tmp_path, external):
     from robogene_head.parts import build_all
     data = copy.deepcopy(raw)
     data["geometry"]["eyes"]["cup_radius"] = 15   # the camera board no longer fits in the cup
     path = tmp_path / "small-eyes.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(P.ParameterError, match=r"geometry\.eyes\.cup_radius"):
-        build_all(P.load(path))
+        build_all(P.load(path), external)

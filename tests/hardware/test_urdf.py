@@ -164,10 +164,10 @@ def test_urdf_meshes_exist_and_load(urdf, fab):
         assert len(mesh.faces) > 0, name
 
 
-def test_a_parameter_change_travels_to_cad_and_urdf(params, tmp_path):
+def test_a_parameter_change_travels_to_cad_and_urdf(params, board_step, tmp_path):
     """Move the eye-tilt axis in the parameter file: the regenerated URDF and the rebuilt CAD agree again."""
     import yaml
-    from robogene_head import massprops, urdf as urdf_gen
+    from robogene_head import external, massprops, urdf as urdf_gen
     from robogene_head.assembly import Assembly
     from robogene_head.params import load
 
@@ -176,7 +176,7 @@ def test_a_parameter_change_travels_to_cad_and_urdf(params, tmp_path):
     path = tmp_path / "moved.yaml"
     path.write_text(yaml.safe_dump(data))
     moved = load(path)
-    assembly = Assembly(moved)
+    assembly = Assembly(moved, external=external.render_and_load(moved, board_step, tmp_path))
     (tmp_path / "head.urdf").write_text(urdf_gen.generate(moved, massprops.link_props(moved, assembly.parts)))
     model = Urdf(tmp_path / "head.urdf")
     assert np.allclose(model.joints["eyes_tilt"]["xyz"], [55, 0, 84])

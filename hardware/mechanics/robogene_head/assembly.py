@@ -8,20 +8,12 @@ from dataclasses import dataclass
 
 import cadquery as cq
 import numpy as np
-from OCP.gp import gp_Trsf
 
 from . import kinematics
+from .geom import location
+from .external import ExternalGeometry
 from .params import HeadParameters
 from .parts import Part, build_all
-
-
-def location(matrix: np.ndarray) -> cq.Location:
-    trsf = gp_Trsf()
-    m = matrix
-    trsf.SetValues(m[0, 0], m[0, 1], m[0, 2], m[0, 3],
-                   m[1, 0], m[1, 1], m[1, 2], m[1, 3],
-                   m[2, 0], m[2, 1], m[2, 2], m[2, 3])
-    return cq.Location(trsf)
 
 
 @dataclass
@@ -32,9 +24,15 @@ class Placed:
 
 
 class Assembly:
-    def __init__(self, params: HeadParameters, parts: list[Part] | None = None):
+    def __init__(self, params: HeadParameters, parts: list[Part] | None = None,
+                 external: ExternalGeometry | None = None):
+        """The whole head from the parameters and the external geometry, or a given list of parts."""
         self.params = params
-        self.parts = parts if parts is not None else build_all(params)
+        if parts is None:
+            if external is None:
+                raise ValueError("the head assembly needs the board STEP and the face plate (robogene_head.external)")
+            parts = build_all(params, external)
+        self.parts = parts
         known = set(kinematics.links(params))
         for p in self.parts:
             if p.link not in known:
@@ -49,5 +47,12 @@ class Assembly:
     def to_cq(self, control: dict[str, float] | None = None, name: str = "robogene_head") -> cq.Assembly:
         assy = cq.Assembly(name=name)
         for placed in self.pose(control):
-            assy.add(placed.shape, name=placed.part.name, color=cq.Color(*placed.part.color))
+            pieces = placed.part.pieces(placed.shape)
+            if len(pieces) == 1:
+                assy.add(placed.shape, name=placed.part.name, color=cq.Color(*placed.part.color, placed.part.alpha))
+                continue
+            sub = cq.Assembly(name=placed.part.name)
+            for label, shape, color in pieces:
+                sub.add(shape, name=label, color=cq.Color(*color, placed.part.alpha))
+            assy.add(sub)
         return assy

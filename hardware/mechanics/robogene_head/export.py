@@ -54,6 +54,6 @@ def write_stl(shape: cq.Shape, path: Path) -> None:
 def link_solid(parts: list[Part]) -> cq.Shape:
     """The parts of one link fused into as few solids as possible, so the mesh has no internal faces and
     touching parts do not share edges between separate shells."""
-    shapes = [p.shape for p in parts if p.kind != "reserved"]
+    shapes = [p.shape for p in parts]
     # No clean(): on the neck base, merging coplanar faces after this fuse gave an invalid shape.
     return shapes[0].fuse(*shapes[1:]) if len(shapes) > 1 else shapes[0]

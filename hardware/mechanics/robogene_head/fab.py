@@ -18,16 +18,20 @@ from pathlib import Path
 
 import numpy as np
 
+from . import external as external_mod
 from . import freecad, joint_config, kinematics, massprops, openscad, render, urdf
 from .assembly import Assembly
+from .board_model import BoardModelError
 from .cache import Cache, digest
 from .checks import interference, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
+from .mesh_solid import MeshSolidError
 from .params import ParameterError, load
 from .progress import Progress
 
 MECHANICS = Path(__file__).resolve().parents[1]
 REPO = MECHANICS.parents[1]
+DEFAULT_BOARD_STEP = REPO / "build" / "fab" / "electronics" / "board.step"   # mk/electronics.mk
 
 
 class BuildError(RuntimeError):
@@ -39,6 +43,12 @@ def _placement_key(part) -> list:
     return [round(m.Value(i, j), 9) for i in (1, 2, 3) for j in (1, 2, 3, 4)]
 
 
+def design_hash(part) -> str:
+    """What a design's outputs are made from: its exact B-rep, kind and materials, and the bytes of the file it
+    was read from (the board STEP, the face plate STL), so a changed source file rebuilds everything made from it."""
+    return shape_hash(part.local, part.kind, part.material, part.source_sha256, *part.solid_materials)
+
+
 def designs_of(parts):
     out = {}
     for part in parts:
@@ -47,79 +57,15 @@ def designs_of(parts):
     return out
 
 
-def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: int | None, progress: Progress) -> dict:
+def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: int | None, progress: Progress,
+          board_step: Path = DEFAULT_BOARD_STEP) -> dict:
     out = out.resolve()   # FreeCAD runs in a scratch directory: every path it gets must be absolute
     out.mkdir(parents=True, exist_ok=True)
     cache = Cache(out / ".cache" / "state.json")
     params = load(params_path)
     params_text = params.path.read_bytes()
-    assembly = Assembly(params)
-    parts = assembly.parts
-    progress.note(f"{len(parts)} parts from {params.path}")
 
-    # 1. Every part is one valid solid.
-    bad = [c for c in validity.check_all(parts) if not c.ok]
-    if bad:
-        raise BuildError("invalid solids: " + "; ".join(
-            f"{c.name} (valid={c.valid}, solids={c.solids}, closed={c.closed}, volume={c.volume:.3f})" for c in bad))
-
-    # 2. STEP per designed/purchased part, STL per printed part.
-    designs = designs_of(parts)
-    hashes = {}
-    summary = []
-    for i, (design, entry) in enumerate(sorted(designs.items())):
-        part = entry["part"]
-        h = shape_hash(part.local, part.kind, part.material)
-        hashes[design] = h
-        outputs = [out / "step" / f"{design}.step"]
-        if part.kind == "printed":
-            outputs.append(out / "stl" / f"{design}.stl")
-        fresh = cache.fresh(f"design:{design}", h, outputs)
-        progress.step("parts", i, len(designs), design, "unchanged" if fresh else "export")
-        if not fresh:
-            write_step(part.local, outputs[0], design)
-            if part.kind == "printed":
-                write_stl(part.local, outputs[1])
-            cache.record(f"design:{design}", h)
-        summary.append({"design": design, "kind": part.kind, "material": part.material, "quantity": len(entry["instances"]),
-                        "instances": entry["instances"], "volume_mm3": round(part.local.Volume(), 3), "hash": h})
-    _remove_stale(out / "step", {f"{d}.step" for d in designs}, progress)
-    _remove_stale(out / "stl", {f"{d}.stl" for d, e in designs.items() if e["part"].kind == "printed"} |
-                  {f"{s.stem}.stl" for s in openscad.sources()}, progress)
-    machined_designs = {d for d, e in designs.items() if e["part"].kind == "machined"}
-    _remove_stale(out / "drawings", {f"{d}.{ext}" for d in machined_designs for ext in ("pdf", "svg")}, progress)
-    geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
-                          [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
-
-    # 3. Link meshes for the URDF, mass properties, URDF.
-    links = kinematics.links(params)
-    for i, link in enumerate(links):
-        link_parts = [p for p in parts if p.link == link]
-        key = digest([(p.name, hashes[p.design], _placement_key(p)) for p in link_parts])
-        target = out / "urdf" / "meshes" / f"{link}.stl"
-        fresh = cache.fresh(f"link:{link}", key, [target])
-        progress.step("meshes", i, len(links), link, "unchanged" if fresh else "fuse+mesh")
-        if not fresh:
-            write_stl(link_solid(link_parts), target)
-            cache.record(f"link:{link}", key)
-    props = massprops.link_props(params, parts)
-    (out / "urdf").mkdir(parents=True, exist_ok=True)
-    (out / "urdf" / "robogene_head.urdf").write_text(urdf.generate(params, props))
-    _write(out / "config" / "head-joints.json", json.dumps(joint_config.config(params), indent=1))
-    mass_report = mass_summary(params, props)
-    _write(out / "reports" / "mass.json", json.dumps(mass_report, indent=1))
-
-    # 4. Assembly STEP and GLB at the zero pose.
-    asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]
-    if not cache.fresh("assembly", geometry_key, asm_out):
-        progress.note("assembly STEP + GLB")
-        asm_out[0].parent.mkdir(parents=True, exist_ok=True)
-        cq_assy = assembly.to_cq()
-        cq_assy.export(str(asm_out[0]), "STEP")
-        cq_assy.export(str(asm_out[1]), "GLTF")
-        cache.record("assembly", geometry_key)
-
-    # 5. OpenSCAD printables.
+    # 0. OpenSCAD printables first: the face plate joins the assembly from its STL.
     scad_defines = openscad.defines(params)
     scads = openscad.sources()
     for i, scad in enumerate(scads):
@@ -131,6 +77,82 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         if not fresh:
             openscad.render_stl(scad, values, target)
             cache.record(f"scad:{scad.stem}", key)
+    try:
+        external = external_mod.load(Path(board_step).resolve(), out / "stl" / f"{external_mod.FACE_PLATE}.stl")
+    except (BoardModelError, MeshSolidError) as exc:
+        raise BuildError(str(exc)) from None
+    assembly = Assembly(params, external=external)
+    parts = assembly.parts
+    progress.note(f"{len(parts)} parts from {params.path} and {external.board.path}")
+
+    # 1. Every part is one valid solid.
+    bad = [c for c in validity.check_all(parts) if not c.ok]
+    if bad:
+        raise BuildError("invalid solids: " + "; ".join(
+            f"{c.name} (valid={c.valid}, solids={c.solids}, closed={c.closed}, volume={c.volume:.3f})" for c in bad))
+
+    # 2. STEP per designed/purchased part, STL per printed part. The board's STEP is the electronics package's
+    # own; the OpenSCAD printables' STLs are OpenSCAD's.
+    designs = designs_of(parts)
+    hashes = {}
+    summary = []
+    for i, (design, entry) in enumerate(sorted(designs.items())):
+        part = entry["part"]
+        h = design_hash(part)
+        hashes[design] = h
+        row = {"design": design, "kind": part.kind, "material": part.material, "quantity": len(entry["instances"]),
+               "instances": entry["instances"], "volume_mm3": round(part.local.Volume(), 3), "hash": h}
+        if part.kind == "board":
+            summary.append(dict(row, step=str(external.board.path), solids=part.expected_solids))
+            continue
+        outputs = [out / "step" / f"{design}.step"]
+        own_stl = part.kind == "printed" and not part.source_sha256
+        if own_stl:
+            outputs.append(out / "stl" / f"{design}.stl")
+        fresh = cache.fresh(f"design:{design}", h, outputs)
+        progress.step("parts", i, len(designs), design, "unchanged" if fresh else "export")
+        if not fresh:
+            write_step(part.local, outputs[0], design)
+            if own_stl:
+                write_stl(part.local, outputs[1])
+            cache.record(f"design:{design}", h)
+        summary.append(row)
+    _remove_stale(out / "step", {f"{d}.step" for d, e in designs.items() if e["part"].kind != "board"}, progress)
+    _remove_stale(out / "stl", {f"{d}.stl" for d, e in designs.items() if e["part"].kind == "printed"} |
+                  {f"{s.stem}.stl" for s in openscad.sources()}, progress)
+    machined_designs = {d for d, e in designs.items() if e["part"].kind == "machined"}
+    _remove_stale(out / "drawings", {f"{d}.{ext}" for d in machined_designs for ext in ("pdf", "svg")}, progress)
+    geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
+                          [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
+
+    # 3. Link meshes for the URDF, mass properties, URDF. The meshes leave out the boards (inside the skirt;
+    # KiCad's component models are not watertight meshes); their mass is in the inertias.
+    links = kinematics.links(params)
+    for i, link in enumerate(links):
+        link_parts = [p for p in parts if p.link == link and p.kind != "board"]
+        key = digest([(p.name, hashes[p.design], _placement_key(p)) for p in link_parts])
+        target = out / "urdf" / "meshes" / f"{link}.stl"
+        fresh = cache.fresh(f"link:{link}", key, [target])
+        progress.step("meshes", i, len(links), link, "unchanged" if fresh else "fuse+mesh")
+        if not fresh:
+            write_stl(link_solid(link_parts), target)
+            cache.record(f"link:{link}", key)
+    props = massprops.link_props(params, parts)
+    (out / "urdf").mkdir(parents=True, exist_ok=True)
+    (out / "urdf" / "robogene_head.urdf").write_text(urdf.generate(params, props))
+    _write(out / "config" / "head-joints.json", json.dumps(joint_config.config(params), indent=1))
+    mass_report = mass_summary(params, props, [p for p in parts if p.kind == "board"])
+    _write(out / "reports" / "mass.json", json.dumps(mass_report, indent=1))
+
+    # 4. Assembly STEP and GLB at the zero pose.
+    asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]
+    if not cache.fresh("assembly", geometry_key, asm_out):
+        progress.note("assembly STEP + GLB")
+        asm_out[0].parent.mkdir(parents=True, exist_ok=True)
+        cq_assy = assembly.to_cq()
+        cq_assy.export(str(asm_out[0]), "STEP")
+        cq_assy.export(str(asm_out[1]), "GLTF")
+        cache.record("assembly", geometry_key)
 
     # 6. Every mesh watertight and manifold.
     stls = sorted((out / "stl").glob("*.stl")) + sorted((out / "urdf" / "meshes").glob("*.stl"))
@@ -160,12 +182,12 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         cache.record("interference", geometry_key)
 
     # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
-    step_files = [out / "step" / f"{d['design']}.step" for d in summary] + [asm_out[0]]
-    expected = {d["design"]: d["volume_mm3"] for d in summary}
+    step_files = [out / "step" / f"{d['design']}.step" for d in summary if d["kind"] != "board"] + [asm_out[0]]
+    expected = {d["design"]: d["volume_mm3"] for d in summary if d["kind"] != "board"}
     expected["robogene_head"] = round(sum(p.local.Volume() for p in parts), 3)
-    solids = {"robogene_head": len(parts)}
+    solids = {"robogene_head": sum(p.expected_solids for p in parts)}
     check_report = out / "reports" / "freecad-step-check.json"
-    check_key = digest(geometry_key, sorted(expected.items()), freecad.check_digest())
+    check_key = digest(geometry_key, sorted(expected.items()), sorted(solids.items()), freecad.check_digest())
     if not cache.fresh("freecad-check", check_key, [check_report]):
         progress.note(f"FreeCAD: re-open {len(step_files)} STEP files")
         try:
@@ -184,15 +206,15 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         designs[d["design"]]["part"].note or "", d["hash"][:8], f"step/{d['design']}.step") for d in machined])
 
     # 9. Renders at a few joint poses.
-    render_out = [out / "renders" / f"{name}.png" for name, *_ in render.VIEWS]
-    face = out / "stl" / "face_plate.stl"
-    render_key = digest(geometry_key, render.VIEWS, hashlib.sha256(face.read_bytes()).hexdigest() if face.exists() else "",
+    render_out = [out / "renders" / f"{view.name}.png" for view in render.VIEWS]
+    render_key = digest(geometry_key, [vars(v) for v in render.VIEWS],
                         hashlib.sha256(Path(render.__file__).read_bytes()).hexdigest())
     if not cache.fresh("renders", render_key, render_out):
-        for i, (name, pose, az, el) in enumerate(render.VIEWS):
-            progress.step("render", i, len(render.VIEWS), name)
-            render.render(assembly, pose, az, el, render_out[i], face_plate=face if face.exists() else None)
+        for i, view in enumerate(render.VIEWS):
+            progress.step("render", i, len(render.VIEWS), view.name)
+            render.render(assembly, view, render_out[i])
         cache.record("renders", render_key)
+    _remove_stale(out / "renders", {p.name for p in render_out}, progress)
 
     # 10. Bill of materials.
     sys.path.insert(0, str(REPO / "hardware" / "bom"))
@@ -207,7 +229,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
     # 11. Summary and manifest with checksums.
     _write(out / "parts.json", json.dumps(summary, indent=1))
-    manifest = write_manifest(out, params_text)
+    manifest = write_manifest(out, params_text, external.board)
     progress.note(f"done: {len(manifest['files'])} files in {out}")
     return manifest
 
@@ -252,7 +274,7 @@ def _remove_stale(folder: Path, keep: set[str], progress: Progress) -> None:
             path.unlink()
 
 
-def mass_summary(params, props) -> dict:
+def mass_summary(params, props, boards) -> dict:
     head_links = ["head_frame", "eyes_tilt_link", "left_eye", "right_eye"]
     poses = kinematics.link_poses(params, {})
     head_frame = poses["head_frame"]
@@ -261,12 +283,18 @@ def mass_summary(params, props) -> dict:
     head = massprops.combine(moved)
     ref = params.root.node("reference")
     ref_i = ref.node("head_inertia_kgmm2")
-    out = {"links": {}, "head_above_yaw": {}, "reference": {}}
+    out = {"links": {}, "head_above_yaw": {}, "reference": {}, "boards": {}}
     for link, mp in props.items():
         out["links"][link] = {"mass_kg": round(mp.mass, 7), "com_mm": [round(v, 3) for v in mp.com],
                               "inertia_kgmm2": [[round(v, 3) for v in row] for row in mp.inertia]}
     out["head_above_yaw"] = {"mass_kg": round(head.mass, 5), "com_mm": [round(v, 3) for v in head.com],
                              "inertia_kgmm2": [[round(v, 3) for v in row] for row in head.inertia]}
+    if boards:
+        each = massprops.part_props(params, boards[0])
+        out["boards"] = {"count": len(boards), "link": boards[0].link, "mass_kg_each": round(each.mass, 5),
+                         "materials": {m: params.root.node("materials").num(m) for m in sorted(set(boards[0].solid_materials))},
+                         "note": "PCB body and KiCad component models at the densities of materials; parts without a "
+                                 "3-D model in the board STEP are not counted"}
     out["reference"] = {"source": "iCub 2.7 standard head, public CAD export (see docs/fabricate.md)",
                         "mass_kg": ref.num("head_mass"),
                         "inertia_kgmm2_diag": [ref_i.num("xx"), ref_i.num("yy"), ref_i.num("zz")],
@@ -285,7 +313,7 @@ def _write(path: Path, text: str) -> None:
 PACKAGE_ENTRIES = ("assembly", "bom", "config", "drawings", "renders", "reports", "step", "stl", "urdf", "parts.json")
 
 
-def write_manifest(out: Path, params_text: bytes) -> dict:
+def write_manifest(out: Path, params_text: bytes, board) -> dict:
     files = []
     for path in sorted(out.rglob("*")):
         rel = path.relative_to(out)
@@ -294,7 +322,8 @@ def write_manifest(out: Path, params_text: bytes) -> dict:
         files.append({"path": str(rel), "bytes": path.stat().st_size,
                       "sha256": hashlib.sha256(path.read_bytes()).hexdigest()})
     manifest = {"package": "robogene-head fabrication package",
-                "parameters_sha256": hashlib.sha256(params_text).hexdigest(), "files": files}
+                "parameters_sha256": hashlib.sha256(params_text).hexdigest(),
+                "board_step": {"path": str(board.path), "sha256": board.sha256}, "files": files}
     _write(out / "manifest.json", json.dumps(manifest, indent=1))
     _write(out / "SHA256SUMS", "".join(f"{f['sha256']}  {f['path']}\n" for f in files))
     return manifest
@@ -308,11 +337,13 @@ def main(argv=None) -> int:
                     help="CSV BOM of a KiCad board (Reference, Value, Footprint, MPN, Qty), merged boards.count times "
                          "per head, or PATH:N for N copies; repeatable")
     ap.add_argument("--batch", type=int, default=None, help="number of heads for the batch cost (default: parameter file)")
+    ap.add_argument("--board-step", type=Path, default=DEFAULT_BOARD_STEP,
+                    help="the motor-control board's STEP from KiCad, placed boards.count times (default: %(default)s)")
     args = ap.parse_args(argv)
     progress = Progress()
     started = time.monotonic()
     try:
-        build(args.out, args.params, args.board_bom, args.batch, progress)
+        build(args.out, args.params, args.board_bom, args.batch, progress, args.board_step)
     except (ParameterError, BuildError) as exc:
         print(f"fab: error: {exc}", file=sys.stderr)
         return 1

@@ -4,6 +4,8 @@
 from __future__ import annotations
 
 import cadquery as cq
+import numpy as np
+from OCP.gp import gp_Trsf
 
 AXES = {"x": cq.Vector(1, 0, 0), "y": cq.Vector(0, 1, 0), "z": cq.Vector(0, 0, 1)}
 
@@ -52,3 +54,13 @@ def single_solid(shape: cq.Shape, name: str) -> cq.Solid:
     if len(solids) != 1:
         raise ValueError(f"part {name}: expected one solid, got {len(solids)}")
     return solids[0]
+
+
+def location(matrix: np.ndarray) -> cq.Location:
+    """A 4x4 rigid transform (mm) as a CadQuery location."""
+    trsf = gp_Trsf()
+    m = matrix
+    trsf.SetValues(m[0, 0], m[0, 1], m[0, 2], m[0, 3],
+                   m[1, 0], m[1, 1], m[1, 2], m[1, 3],
+                   m[2, 0], m[2, 1], m[2, 2], m[2, 3])
+    return cq.Location(trsf)

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Mass, centre of mass and inertia of parts and links (kg, mm, kg*mm^2).
 
-Made parts use their material's density; purchased envelopes spread their datasheet mass uniformly.
-Reserved volumes (board envelopes) carry no mass: their boards are not designed yet."""
+Made parts use their material's density; purchased envelopes spread their datasheet mass uniformly. A board
+(the KiCad STEP) gives each of its solids a material: the PCB body one density, the component models another
+(both in the parameter file's materials)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -40,27 +41,39 @@ def combine(items: list[MassProps]) -> MassProps:
     return MassProps(mass, com, inertia)
 
 
-def density(params: HeadParameters, part: Part, volume: float) -> float:
+def material_density(params: HeadParameters, material: str) -> float:
     """kg/mm^3."""
-    if part.kind == "reserved":
-        return 0.0
-    if part.kind == "purchased":
-        return part.mass / volume
-    return params.root.node("materials").num(part.material, positive=True) * 1e-9
+    return params.root.node("materials").num(material, positive=True) * 1e-9
 
 
-def part_props(params: HeadParameters, part: Part) -> MassProps:
-    """Mass properties of a part in its link frame."""
+def solid_props(shape, rho: float, name: str) -> MassProps:
+    """Mass properties of a shape of uniform density rho (kg/mm^3), in the shape's own frame."""
     props = GProp_GProps()
-    BRepGProp.VolumeProperties_s(part.shape.wrapped, props)
+    BRepGProp.VolumeProperties_s(shape.wrapped, props)
     volume = props.Mass()
     if volume <= 0:
-        raise ValueError(f"part {part.name}: non-positive volume {volume}")
-    rho = density(params, part, volume)
+        raise ValueError(f"part {name}: non-positive volume {volume}")
     c = props.CentreOfMass()
     m = props.MatrixOfInertia()  # about the centre of mass, volume-weighted
     inertia = np.array([[m.Value(i, j) for j in (1, 2, 3)] for i in (1, 2, 3)]) * rho
     return MassProps(volume * rho, np.array([c.X(), c.Y(), c.Z()]), inertia)
+
+
+def part_props(params: HeadParameters, part: Part) -> MassProps:
+    """Mass properties of a part in its link frame."""
+    shape = part.shape
+    if part.solid_materials:
+        solids = shape.Solids()
+        if len(solids) != len(part.solid_materials):
+            raise ValueError(f"part {part.name}: {len(solids)} solids but {len(part.solid_materials)} materials")
+        return combine([solid_props(s, material_density(params, m), part.name)
+                        for s, m in zip(solids, part.solid_materials)])
+    if part.kind == "purchased":
+        volume = shape.Volume()
+        if volume <= 0:
+            raise ValueError(f"part {part.name}: non-positive volume {volume}")
+        return solid_props(shape, part.mass / volume, part.name)
+    return solid_props(shape, material_density(params, part.material), part.name)
 
 
 def link_props(params: HeadParameters, parts: list[Part]) -> dict[str, MassProps]:

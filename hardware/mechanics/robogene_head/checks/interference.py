@@ -130,8 +130,7 @@ def _distance(s1, s2) -> float:
     return tool.Value()
 
 
-def check(params: HeadParameters, assembly: Assembly | None = None, poses=None, progress=None) -> Report:
-    assembly = assembly or Assembly(params)
+def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None) -> Report:
     poses = poses if poses is not None else sweep_poses(params)
     fit_tol = params.geometry("clearances").num("fit_tolerance", positive=True)
     exact_below = params.geometry("clearances").num("minimum", positive=True) + 2 * MESH_DEFLECTION

@@ -3,15 +3,19 @@
 """Every part of the head, grouped by family; build_all() returns them placed in their link frames."""
 from __future__ import annotations
 
+from ..external import ExternalGeometry
 from ..params import HeadParameters
 from .base import Part
-from . import covers, eyes, head_frame, neck, boards
+from . import boards, covers, eyes, face, head_frame, neck
 
 
-def build_all(params: HeadParameters) -> list[Part]:
+def build_all(params: HeadParameters, external: ExternalGeometry) -> list[Part]:
+    """external: the KiCad board and the OpenSCAD face plate (robogene_head.external)."""
     parts: list[Part] = []
-    for family in (neck, head_frame, eyes, covers, boards):
+    for family in (neck, head_frame, eyes, covers):
         parts.extend(family.build(params))
+    parts += face.build(params, external)
+    parts += boards.build(params, external.board)
     names = [p.name for p in parts]
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:

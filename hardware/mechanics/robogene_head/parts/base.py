@@ -8,8 +8,8 @@ from dataclasses import dataclass, field
 import cadquery as cq
 
 # machined / printed parts are made from our drawings; purchased parts are envelopes of catalog items;
-# reserved volumes (the motor-control boards) keep space free for issue 5's electronics.
-KINDS = ("machined", "printed", "purchased", "reserved")
+# boards are the motor-control boards as KiCad exports them (their parts come from the board BOM).
+KINDS = ("machined", "printed", "purchased", "board")
 
 
 @dataclass
@@ -24,10 +24,30 @@ class Part:
     mass: float | None = None  # purchased: datasheet mass (kg), spread over the envelope
     color: tuple[float, float, float] = (0.7, 0.7, 0.7)
     note: str = ""
+    alpha: float = 1.0   # opacity in renders and the GLB (the face plate is see-through there)
+    # Parts of several solids (a board: PCB body + component models) give a material per solid of `local`,
+    # in the order of local.Solids(); all other parts are one solid of `material`.
+    solid_materials: tuple[str, ...] = ()
+    source_sha256: str = ""   # geometry read from another tool's file: that file's hash, for the build's caches
 
     def __post_init__(self):
         if self.kind not in KINDS:
             raise ValueError(f"part {self.name}: unknown kind {self.kind!r}")
+
+    @property
+    def expected_solids(self) -> int:
+        return len(self.solid_materials) or 1
+
+    def pieces(self, shape: cq.Shape) -> list[tuple[str, cq.Shape, tuple[float, float, float]]]:
+        """(label, geometry, colour) for display: one piece, or one per material of a multi-solid part.
+        `shape` is this part's geometry in any frame (local, link or world)."""
+        if not self.solid_materials:
+            return [(self.name, shape, self.color)]
+        groups: dict[str, list[cq.Solid]] = {}
+        for solid, material in zip(shape.Solids(), self.solid_materials):
+            groups.setdefault(material, []).append(solid)
+        return [(f"{self.name}_{material}", cq.Compound.makeCompound(solids), MATERIAL_COLORS.get(material, self.color))
+                for material, solids in groups.items()]
 
     @property
     def shape(self) -> cq.Shape:
@@ -52,3 +72,8 @@ PRINTED = (0.95, 0.55, 0.12)
 DARK = (0.15, 0.15, 0.17)
 STEEL = (0.55, 0.57, 0.6)
 GREEN = (0.1, 0.45, 0.2)
+
+# Materials of a board's solids (keys of materials in the parameter file) and their display colours.
+PCB_MATERIAL = "pcb-fr4-4-layer"
+COMPONENTS_MATERIAL = "board-components"
+MATERIAL_COLORS = {PCB_MATERIAL: GREEN, COMPONENTS_MATERIAL: DARK}

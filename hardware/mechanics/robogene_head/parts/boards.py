@@ -1,25 +1,30 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: CERN-OHL-S-2.0
-"""Space reserved for the motor-control boards (issue 5) in the neck base's board bay."""
+"""The three motor-control boards in the neck base's board bay: the KiCad board STEP, placed once per board."""
 from __future__ import annotations
 
-from .. import geom
-from ..params import HeadParameters
-from .base import GREEN, Part, loc
+from ..board_model import BoardModel
+from ..params import HeadParameters, ParameterError
+from .base import COMPONENTS_MATERIAL, GREEN, PCB_MATERIAL, Part, loc
+
+DESIGN = "motor_board"
 
 
-def build(params: HeadParameters) -> list[Part]:
+def build(params: HeadParameters, board: BoardModel) -> list[Part]:
     b = params.root.node("boards")
-    env = b.node("envelope")
-    l, w, h = env.num("length", positive=True), env.num("width", positive=True), env.num("height", positive=True)
     names = b.raw("names")
     if not isinstance(names, list) or len(names) != int(b.num("count", positive=True)):
         raise b._fail("names", f"expected a list of {int(b.num('count'))} board names")
     ox, oy, oz = b.vec("origin")
     pitch = b.num("stack_pitch", positive=True)
-    if pitch < h:
-        raise b._fail("stack_pitch", f"{pitch} is below the envelope height {h}: the boards would overlap")
-    shape = geom.box(-l / 2, l / 2, -w / 2, w / 2, -h / 2, h / 2)
-    return [Part(f"board_{name}", "board_envelope", "neck_base", "reserved", shape, loc(ox, oy, oz + i * pitch),
-                 color=GREEN, note="envelope reserved for the motor-control board " + name)
+    low, high = board.z_range
+    gap = params.geometry("clearances").num("minimum")
+    if pitch < high - low + gap:
+        raise ParameterError(f"{params.path}: boards.stack_pitch: {pitch} leaves under {gap} mm between the boards: "
+                             f"{board.path} reaches {low:.2f} below and {high:.2f} above its PCB's bottom face")
+    materials = tuple(PCB_MATERIAL if i == board.pcb_index else COMPONENTS_MATERIAL for i in range(len(board.solids)))
+    shape = board.shape
+    return [Part(f"board_{name}", DESIGN, "neck_base", "board", shape, loc(ox, oy, oz + i * pitch), color=GREEN,
+                 solid_materials=materials, source_sha256=board.sha256,
+                 note=f"motor-control board {name}, from {board.path.name}")
             for i, name in enumerate(names)]

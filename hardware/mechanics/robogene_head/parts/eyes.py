@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
-from . import mounts, purchased
+from . import gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -61,10 +61,14 @@ def build(params: HeadParameters) -> list[Part]:
         geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + 1 + pw),            # tilt shafts
         geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
     )
+    # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
+    # the eye cups.
+    flanges = {s: loc(0, s * half, z_top, rx=180) for s in (1, -1)}
     frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
-                              for s in (1, -1)])
+                              for s in (1, -1)],
+                     *[t.moved(f) for f in flanges.values() for t in gearhead_screws.holes(pan_gear.num("diameter"), pt)])
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
-                  material="aluminium-6082", color=ALUMINIUM)]
+                  material="aluminium-6082", color=ALUMINIUM, note="Pan gearheads: " + gearhead_screws.NOTE)]
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
@@ -76,6 +80,7 @@ def build(params: HeadParameters) -> list[Part]:
         joint = f"{side}_eye_pan"
         # The pan gearhead hangs under the tilt plate, output shaft up into the eye cup.
         parts += purchased.drive_stack(params, joint, "eyes_tilt_link", loc(0, sign * half, z_top - pt, rx=180))
+        parts += gearhead_screws.screws(params, joint, "eyes_tilt_link", flanges[sign], pan_gear.num("diameter"), pt)
         link = params.joints[joint].child
         parts.append(Part(f"{side}_eye_cup", "eye_cup", link, "printed", cup, material="petg-printed", color=PRINTED))
         parts.append(purchased.camera(params, f"{side}_camera", cam_key, link, loc()))

@@ -9,17 +9,27 @@ import cadquery as cq
 
 from .. import geom
 from ..params import HeadParameters
+from . import gearhead_screws
+
+FIXING_CLEARANCE = 3.4   # M3, ISO 273 medium
+FIXING_SCREW = "iso7380-M3x8"
 
 
-def mount_plate(width: float, height: float, thickness: float, hole: float, gearhead_diameter: float) -> cq.Shape:
-    """Flange plate in z 0..thickness centred on its axis: a pilot hole for the output shaft and the four
-    M2 screw holes on the gearhead's bolt circle (70 % of its diameter)."""
-    plate = geom.box(-width / 2, width / 2, -height / 2, height / 2, 0, thickness)
-    holes = [geom.cyl("z", hole, -1, thickness + 1)]
-    r = 0.35 * gearhead_diameter
-    for k in range(4):
-        a = math.radians(45 + 90 * k)
-        holes.append(geom.cyl("z", 2.2, -1, thickness + 1, (r * math.cos(a), r * math.sin(a))))
+def mount_plate(outline: tuple[float, float, float, float], thickness: float, hole: float, gearhead_diameter: float,
+                fixings: tuple[tuple[float, float], ...] = (), slot: float = 0.0, counterbores: bool = True) -> cq.Shape:
+    """Flange plate in z 0..thickness with its axis at the origin, outline (x0, x1, y0, y1); the gearhead's flange
+    bears on z = thickness. A pilot hole for the output shaft, the gearhead's four M2 screw holes (counterbored
+    from z = 0 unless counterbores is False: gearhead_screws), and M3 clearance holes at `fixings` for the screws
+    that hold the plate on the structure, drawn as slots `slot` long along x where the plate must slide."""
+    x0, x1, y0, y1 = outline
+    plate = geom.box(x0, x1, y0, y1, 0, thickness)
+    holes = [geom.cyl("z", hole, -1, thickness + 1), *gearhead_screws.holes(gearhead_diameter, thickness, counterbores)]
+    for x, y in fixings:
+        holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x - slot / 2, y)))
+        if slot > 0:
+            holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x + slot / 2, y)))
+            holes.append(geom.box(x - slot / 2, x + slot / 2, y - FIXING_CLEARANCE / 2, y + FIXING_CLEARANCE / 2,
+                                  -1, thickness + 1))
     return geom.single_solid(geom.cut(plate, *holes), "mount_plate")
 
 

@@ -5,11 +5,22 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
-from . import mounts, purchased
+from . import gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
 STANDOFF = "standoff-M3x46-FF"
+UPRIGHT_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer face "
+                "for the pitch motor mount (unused on the right upright)")
+PITCH_STAGE_NOTE = "Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount"
+MOUNT_NOTE = "3.4 holes: M3 fixing screws. " + gearhead_screws.NOTE
+# Pitch motor mount on the left upright's outer face: plate outline and its four M3 fixings, in the plate's frame
+# (x along the head's x, y down the upright).
+PITCH_MOUNT = (-20.0, 20.0, -18.0, 18.0)
+PITCH_FIXINGS = tuple((sx * 16.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1))
+# Roll motor mount on the rear lug: the lug is a bearing ring above, so the plate reaches down past the bearing
+# and its two M3 fixings go into the lug below it (plate x runs up the lug).
+ROLL_FIXINGS = ((-14.5, -6.0), (-14.5, 6.0))
 
 
 def _base(params: HeadParameters) -> list[Part]:
@@ -39,10 +50,12 @@ def _base(params: HeadParameters) -> list[Part]:
     bw, bo = bearing.num("width"), bearing.num("outside")
     height = hp + bo / 2 + 5
     # Left upright in its design frame; the right one is the same part turned half a turn about z.
-    upright = geom.cut(geom.box(-ul / 2, ul / 2, gap / 2, gap / 2 + ut, 0, height),
-                       geom.cyl("y", 8, gap / 2 - 1, gap / 2 + ut + 1, (0, hp)),
-                       geom.cyl("y", bo, gap / 2 + ut - bw, gap / 2 + ut + 1, (0, hp)),
-                       *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)])
+    y_face = gap / 2 + ut
+    upright = geom.cut(geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height),
+                       geom.cyl("y", 8, gap / 2 - 1, y_face + 1, (0, hp)),
+                       geom.cyl("y", bo, y_face - bw, y_face + 1, (0, hp)),
+                       *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)],
+                       *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy)) for fx, fy in PITCH_FIXINGS])
     upright = geom.single_solid(upright, "neck_upright")
 
     parts = [
@@ -50,9 +63,10 @@ def _base(params: HeadParameters) -> list[Part]:
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_base_flange", "neck_base_flange", "neck_base", "machined", geom.single_solid(flange, "flange"),
              loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM),
-        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM),
+        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM,
+             note=UPRIGHT_NOTE),
         Part("neck_upright_right", "neck_upright", "neck_base", "machined", upright, loc(rz=180),
-             material="aluminium-6082", color=ALUMINIUM),
+             material="aluminium-6082", color=ALUMINIUM, note=UPRIGHT_NOTE),
     ]
     for i, (x, y) in enumerate(corners):
         parts.append(purchased.standoff(params, f"base_standoff_{i}", STANDOFF, "neck_base", loc(x, y, -T - bay)))
@@ -67,9 +81,13 @@ def _base(params: HeadParameters) -> list[Part]:
     parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"), "neck_base",
                                    loc(0, -y_out + bw, hp, rx=90)))
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
-    mount = mounts.mount_plate(40, 36, 4, 8, gear.num("diameter"))
+    mount = mounts.mount_plate(PITCH_MOUNT, 4, 8, gear.num("diameter"), PITCH_FIXINGS)
     parts.append(Part("neck_pitch_motor_mount", "motor_mount_neck_pitch", "neck_base", "machined", mount,
-                      loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM))
+                      loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
+    parts += gearhead_screws.screws(params, "neck_pitch", "neck_base", loc(0, y_out, hp, rx=-90), gear.num("diameter"), 4)
+    for i, (fx, fy) in enumerate(PITCH_FIXINGS):   # heads on the plate, shanks into the upright (-y)
+        parts.append(purchased.screw(params, f"pitch_mount_screw_{i}", mounts.FIXING_SCREW, "neck_base",
+                                     loc(fx, y_out + 4, hp - fy, rx=90)))
     parts += purchased.drive_stack(params, "neck_pitch", "neck_base", loc(0, y_out + 4, hp, rx=-90))
     parts.append(purchased.joint_encoder(params, "neck_pitch_joint_encoder", "neck_base", loc(0, -y_out - 1, hp, rx=90)))
     return parts
@@ -98,17 +116,27 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     stage = geom.cut(stage,
                      geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + 4, y_out + 1),
                      geom.cyl("x", bearing.num("outside"), span / 2 - 1, x_out + 1, (0, zr)),
-                     geom.cyl("x", bearing.num("outside"), -x_out - 1, -span / 2 + 1, (0, zr)))
+                     geom.cyl("x", bearing.num("outside"), -x_out - 1, -span / 2 + 1, (0, zr)),
+                     *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in ROLL_FIXINGS])
     parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
-                  material="aluminium-6082", color=ALUMINIUM)]
+                  material="aluminium-6082", color=ALUMINIUM, note=PITCH_STAGE_NOTE)]
     key = params.drive("neck_roll").text("bearing")
     parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(span / 2, 0, zr, ry=90)))
     parts.append(purchased.bearing(params, "neck_roll_bearing_rear", key, "neck_pitch_link", loc(-span / 2, 0, zr, ry=-90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
+    rd = roll_gear.num("diameter")
+    bottom = min(fx for fx, _ in ROLL_FIXINGS) - 4.5
+    if zr + bottom < bh / 2 - 4:
+        raise ParameterError(f"{params.path}: joints.neck_roll.origin[2]: {zr} leaves the roll motor mount's screws "
+                             f"below the rear lug")
     parts.append(Part("neck_roll_motor_mount", "motor_mount_neck_roll", "neck_pitch_link", "machined",
-                      mounts.mount_plate(roll_gear.num("diameter"), lw, 4, 8, roll_gear.num("diameter")),
+                      mounts.mount_plate((bottom, rd / 2, -lw / 2, lw / 2), 4, 8, rd, ROLL_FIXINGS),
                       loc(-x_out, 0, zr, ry=-90),
-                      material="aluminium-6082", color=ALUMINIUM))
+                      material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
+    parts += gearhead_screws.screws(params, "neck_roll", "neck_pitch_link", loc(-x_out, 0, zr, ry=-90), rd, 4)
+    for i, (fx, fy) in enumerate(ROLL_FIXINGS):   # heads on the plate, shanks into the lug (+x)
+        parts.append(purchased.screw(params, f"roll_mount_screw_{i}", mounts.FIXING_SCREW, "neck_pitch_link",
+                                     loc(-x_out - 4, fy, zr + fx, ry=90)))
     parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - 4, 0, zr, ry=-90))
     parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(x_out + 1, 0, zr, ry=90)))
     return parts

@@ -1,0 +1,95 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Every screw in the assembly holds parts together: its head bears on one part and its shank sits in a hole
+of another (it touches at least two parts of its link), and it overlaps none, so each one has its holes.
+The parts the fabrication guide says to bolt are bolted."""
+import numpy as np
+import pytest
+
+from robogene_head.checks import interference
+
+
+def _screws(params, assembly):
+    return [p for p in assembly.parts
+            if p.kind == "purchased" and params.purchased(p.design).text("kind") == "screw"]
+
+
+def _near(a, b, margin=1.0):
+    ba, bb = a.shape.BoundingBox(), b.shape.BoundingBox()
+    lo = np.maximum([ba.xmin, ba.ymin, ba.zmin], [bb.xmin, bb.ymin, bb.zmin])
+    hi = np.minimum([ba.xmax, ba.ymax, ba.zmax], [bb.xmax, bb.ymax, bb.zmax])
+    return np.all(lo - hi <= margin)
+
+
+@pytest.fixture(scope="module")
+def held(params, assembly):
+    """screw name -> names of the parts it touches; fails on any overlap."""
+    fit = params.geometry("clearances").num("fit_tolerance")
+    out = {}
+    for screw in _screws(params, assembly):
+        touched = []
+        for other in assembly.parts:
+            if other is screw or other.link != screw.link or not _near(screw, other):
+                continue
+            if interference._distance(screw.shape, other.shape) < fit:
+                overlap = screw.shape.intersect(other.shape).Volume()
+                assert overlap < interference.VOLUME_TOLERANCE, f"{screw.name} cuts into {other.name}: {overlap:.2f} mm^3"
+                touched.append(other.name)
+        out[screw.name] = touched
+    return out
+
+
+def test_every_screw_joins_two_parts(held):
+    loose = {name: parts for name, parts in held.items() if len(parts) < 2}
+    assert loose == {}
+
+
+@pytest.mark.parametrize("a, b", [
+    ("head_floor", "head_side_plate_left"), ("head_floor", "head_side_plate_right"),
+    ("head_floor", "head_back_plate"),
+    ("head_side_plate_left", "head_back_plate"), ("head_side_plate_right", "head_back_plate"),
+    ("head_side_plate_left", "head_top_bar"), ("head_side_plate_right", "head_top_bar"),
+    ("face_plate", "head_side_plate_left"), ("face_plate", "head_side_plate_right"),
+    ("neck_pitch_motor_mount", "neck_upright_left"), ("neck_roll_motor_mount", "neck_pitch_stage"),
+    ("neck_yaw_motor_mount", "head_floor"),
+    # every gearhead hangs on four M2 through the plate its flange bears on
+    ("neck_pitch_motor_mount", "neck_pitch_gearhead"), ("neck_roll_motor_mount", "neck_roll_gearhead"),
+    ("neck_yaw_motor_mount", "neck_yaw_gearhead"), ("head_side_plate_left", "eyes_tilt_gearhead"),
+    ("eyes_tilt_frame", "left_eye_pan_gearhead"), ("eyes_tilt_frame", "right_eye_pan_gearhead"),
+])
+def test_the_parts_the_guide_bolts_are_bolted(held, a, b):
+    screws = [name for name, parts in held.items() if a in parts and b in parts]
+    assert len(screws) >= 2, f"{a} and {b} share {screws}"
+
+
+def test_the_yaw_motor_mount_slides_to_tension_the_belt(params, assembly):
+    """Its screws sit in slots: the plate moves 0.9 mm either way along x without touching a shank."""
+    from robogene_head.parts.base import loc
+    plate = next(p for p in assembly.parts if p.name == "neck_yaw_motor_mount")
+    screws = [p for p in assembly.parts if p.name.startswith("yaw_mount_screw_")]
+    assert len(screws) == 4
+    for dx in (-0.9, 0.9):
+        moved = plate.shape.moved(loc(dx, 0, 0))
+        for screw in screws:
+            assert moved.intersect(screw.shape).Volume() < 1e-6, (dx, screw.name)
+    # ... and not further: 1.5 mm along x closes the slot on every shank
+    assert all(plate.shape.moved(loc(1.5, 0, 0)).intersect(s.shape).Volume() > 0.1 for s in screws)
+    # The gearhead's screw heads under the plate move along in their slotted pockets in the floor.
+    floor = next(p for p in assembly.parts if p.name == "head_floor")
+    heads = [p for p in assembly.parts if p.name.startswith("neck_yaw_gearhead_screw_")]
+    assert len(heads) == 4
+    for dx in (-0.9, 0.9):
+        for screw in heads:
+            assert screw.shape.moved(loc(dx, 0, 0)).intersect(floor.shape).Volume() < 1e-6, (dx, screw.name)
+
+
+def test_a_screw_too_long_for_the_gearhead_threads_is_named(params, external, tmp_path):
+    import yaml
+    from robogene_head.params import ParameterError, load
+    from robogene_head.parts import build_all
+    data = yaml.safe_load(params.path.read_text())
+    data["purchased"]["iso4762-M2x8"]["length"] = 12
+    path = tmp_path / "long-screws.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ParameterError, match=r"purchased\.iso4762-M2x8: reaches 8.2 mm into eyes_tilt's gearhead"):
+        build_all(load(path), external)
