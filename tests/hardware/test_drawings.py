@@ -20,7 +20,9 @@ from OCP.TopAbs import TopAbs_REVERSED
 from robogene_head import freecad
 
 NUMBER = re.compile(r"(?<![\d.])\d+(?:\.\d+)?")
-DIAMETER = re.compile(r"⌀\s*(\d+(?:\.\d+)?)")
+# pdftotext puts each character of a vertical label on a line of its own ("⌀\n4\n.\n4"), so
+# whitespace may stand between the digits and the decimal point; it is dropped before the number is read.
+DIAMETER = re.compile(r"⌀\s*(\d+(?:\s*\.\s*\d+)?)")
 
 
 def pdf_text(pdf: Path) -> str:
@@ -95,8 +97,8 @@ def test_the_overall_extents_printed_are_those_of_the_step(fab, machined):
 def test_hole_diameters_are_printed_and_every_diameter_is_a_real_one(fab, machined):
     for name in machined:
         cyl = cylinders(fab / "step" / f"{name}.step")
-        printed = sorted(float(d) for d in DIAMETER.findall(pdf_text(fab / "drawings" / f"{name}.pdf")))
-        assert printed == sorted(float(d) for d in DIAMETER.findall(svg_text(fab / "drawings" / f"{name}.svg"))), name
+        printed = sorted(float(re.sub(r"\s", "", d)) for d in DIAMETER.findall(pdf_text(fab / "drawings" / f"{name}.pdf")))
+        assert printed == sorted(float(re.sub(r"\s", "", d)) for d in DIAMETER.findall(svg_text(fab / "drawings" / f"{name}.svg"))), name
         holes = [d for d, hole in cyl if hole]
         if holes:
             assert any(abs(p - h) <= 0.01 for p in printed for h in holes), (name, holes, printed)
@@ -167,7 +169,7 @@ def test_a_part_of_known_size_is_dimensioned_exactly(known_parts):
         ("front", "diameter", "Diameter", 3),
     }
     text = pdf_text(folder / "test_block.pdf")
-    assert sorted(float(d) for d in DIAMETER.findall(text)) == [3.0, 4.5, 6.6]
+    assert sorted(float(re.sub(r"\s", "", d)) for d in DIAMETER.findall(text)) == [3.0, 4.5, 6.6]
     assert missing([60, 40, 12, 10, 45, 8, 30, 6], numbers(text), tol=1e-9) == []
     # and a sheet that printed 60 where 60.6 was due would be caught
     assert missing([60.6], numbers(text)) == [60.6]
