@@ -170,7 +170,9 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
     # 7. Interference and clearance over the joint sweep (the slow step: cached on the geometry).
     inter_out = [out / "reports" / "interference.txt", out / "reports" / "interference.json"]
-    if not cache.fresh("interference", geometry_key, inter_out):
+    # A change to the checker itself must re-run it, as a change to the geometry does.
+    inter_key = digest(geometry_key, hashlib.sha256(Path(interference.__file__).read_bytes()).hexdigest())
+    if not cache.fresh("interference", inter_key, inter_out):
         poses = interference.sweep_poses(params)
         report = interference.check(params, assembly, poses,
                                     progress=lambda i, n: progress.step("sweep", i, n, f"pose {i + 1}"))
@@ -179,7 +181,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         _write(inter_out[1], json.dumps(interference.report_json(report, minimum), indent=1))
         if not report.ok:
             raise BuildError("interference check failed, see " + str(inter_out[0]))
-        cache.record("interference", geometry_key)
+        cache.record("interference", inter_key)
 
     # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
     step_files = [out / "step" / f"{d['design']}.step" for d in summary if d["kind"] != "board"] + [asm_out[0]]

@@ -138,12 +138,16 @@ def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None)
     cache: dict = {}
     interferences, contacts, clearances = [], [], {}
     checked = 0
+    links = [p.link for p in assembly.parts]
+    # Two parts of one link never move relative to each other: they are checked in the first pose only.
+    pairs_first = list(itertools.combinations(range(len(links)), 2))
+    pairs_moving = [(i, j) for i, j in pairs_first if links[i] != links[j]]
     for index, pose in enumerate(poses):
         if progress:
             progress(index, len(poses))
         placed = assembly.pose(pose)
         objects, boxes = meshes.objects(placed)
-        for i, j in itertools.combinations(range(len(placed)), 2):
+        for i, j in pairs_first if index == 0 else pairs_moving:
             pa, pb = placed[i], placed[j]
             gap = np.maximum(boxes[i][0], boxes[j][0]) - np.minimum(boxes[i][1], boxes[j][1])
             if np.any(gap > NEAR):
