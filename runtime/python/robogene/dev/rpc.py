@@ -381,6 +381,10 @@ class RpcClient:
         return []
 
 
+_ROWS_BOTTOM_UP = 1 << 16
+_MAX_SIDE = 1 << 16
+
+
 def encode_image(image: ImageRgb, quantum: int = 8) -> Bottle:
     """A YARP 3 image: [mat] [rgb] (3 size quantum|1<<16 width height) {pixels}, rows padded to
     `quantum` bytes, bottom row first as bit 16 says (the same bytes as the C++ encode_image)."""
@@ -394,10 +398,51 @@ def encode_image(image: ImageRgb, quantum: int = 8) -> Bottle:
     b.add(Value.vocab(vocab("mat")))
     b.add(Value.vocab(vocab("rgb")))
     header = b.add_list()
-    for n in (3, len(pixels), quantum | (1 << 16), image.width, image.height):
+    for n in (3, len(pixels), quantum | _ROWS_BOTTOM_UP, image.width, image.height):
         header.add(Value.int32(n))
     b.add(Value.blob(bytes(pixels)))
     return b
+
+
+class ImageError(ValueError):
+    """A message that is not a YARP 3 RGB image; the text says what is wrong with it."""
+
+
+def decode_image(m: Bottle) -> ImageRgb:
+    """The image in a YARP 3 image message, by the rules of the C++ decode_image: rows bottom
+    row first when bit 16 of the quantum field is set (as YARP 3.5 reads it), top row first
+    otherwise; raises ImageError with the reason for anything else."""
+    if len(m) != 4 or not m[0].is_vocab() or m[0].as_vocab() != vocab("mat"):
+        raise ImageError(f"not an image: expected [mat] <pixel code> (header) {{pixels}}, got {len(m)} items")
+    if not m[1].is_vocab() or m[1].as_vocab() != vocab("rgb"):
+        raise ImageError(f"pixel code {m[1].to_text()} is not [rgb]")
+    if not m[2].is_list() or len(m[2].as_list()) != 5:
+        raise ImageError(f"image header is not a list of 5 integers: {m[2].to_text()}")
+    f = []
+    for i, v in enumerate(m[2].as_list()):
+        if not v.is_int():
+            raise ImageError(f"image header field {i} is not an integer: {v.to_text()}")
+        f.append(v.as_int())
+    quantum, width, height = f[2] & 0xFFFF, f[3], f[4]
+    if f[0] != 3:
+        raise ImageError(f"image depth {f[0]} is not 3 (RGB)")
+    if width < 0 or height < 0 or width > _MAX_SIDE or height > _MAX_SIDE or quantum < 1:
+        raise ImageError(f"image size {width}x{height} or quantum {quantum} is out of range")
+    row = (width * 3 + quantum - 1) // quantum * quantum
+    expected = row * height
+    blob = m[3].as_bytes() if m[3].is_blob() else None
+    if blob is None or len(blob) != expected or f[1] != expected:
+        raise ImageError(f"image of {width}x{height} with quantum {quantum} needs {expected} pixel bytes, "
+                         f"header says {f[1]}, blob has {len(blob) if blob is not None else 'none'}")
+    bottom_up = bool(f[2] & _ROWS_BOTTOM_UP)
+    image = ImageRgb()
+    image.resize(width, height)
+    packed = width * 3
+    source = memoryview(blob)
+    for y in range(height):
+        at = (height - 1 - y if bottom_up else y) * row
+        image.pixels[y * packed:(y + 1) * packed] = source[at:at + packed]
+    return image
 
 
 def _path(words: Sequence[str]) -> Bottle:

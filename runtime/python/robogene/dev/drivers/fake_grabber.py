@@ -18,17 +18,23 @@ _SUPPORTED = (CameraFeature.BRIGHTNESS, CameraFeature.EXPOSURE, CameraFeature.SH
 
 
 def draw(width: int, height: int, n: int) -> ImageRgb:
-    """Frame n of the pattern, before brightness and gain."""
+    """Frame n of the pattern, before brightness and gain. Built a row at a time (red and blue
+    only change along a row, green only down a column), fast enough for 640x480 at 30 Hz."""
     image = ImageRgb()
     image.resize(width, height)
+    red = bytes((x + 2 * n) % 256 for x in range(width))
+    rows = []  # the two rows of the checkerboard, by the parity of (y // 16 + n // 8)
+    for parity in (0, 1):
+        row = bytearray(width * 3)
+        row[0::3] = red
+        row[2::3] = bytes(200 if (x // 16 + parity) % 2 else 40 for x in range(width))
+        rows.append(row)
+    stride = width * 3
     p = image.pixels
-    i = 0
     for y in range(height):
-        for x in range(width):
-            p[i] = (x + 2 * n) % 256
-            p[i + 1] = (y + n) % 256
-            p[i + 2] = 200 if (x // 16 + y // 16 + n // 8) % 2 else 40
-            i += 3
+        row = rows[(y // 16 + n // 8) % 2]
+        row[1::3] = bytes(((y + n) % 256,)) * width
+        p[y * stride:(y + 1) * stride] = row
     return image
 
 
@@ -97,7 +103,8 @@ class FakeGrabber(DeviceDriver, IFrameGrabberImage, IFrameGrabberControls, ISimu
             gain = 2.0 * self._effective(CameraFeature.GAIN)
             offset = (self._effective(CameraFeature.BRIGHTNESS) - 0.5) * 255.0
         if gain != 1.0 or offset != 0.0:
-            image.pixels = bytearray(min(255, max(0, _round(b * gain + offset))) for b in image.pixels)
+            table = bytes(min(255, max(0, _round(b * gain + offset))) for b in range(256))
+            image.pixels = bytearray(image.pixels.translate(table))
         return image
 
     def height(self) -> Optional[int]:
