@@ -59,7 +59,7 @@ def test_every_screw_joins_two_parts(held):
     ("head_side_plate_left", "head_top_bar"), ("head_side_plate_right", "head_top_bar"),
     ("face_plate", "head_side_plate_left"), ("face_plate", "head_side_plate_right"),
     ("neck_pitch_motor_mount", "neck_upright_left"), ("neck_roll_motor_mount", "neck_pitch_stage"),
-    ("neck_yaw_motor_mount", "head_floor"),
+    ("neck_yaw_motor_mount", "head_floor"), ("eyes_tilt_motor_clamp", "head_back_plate"),
     # every gearhead hangs on four M2 through the plate its flange bears on
     ("neck_pitch_motor_mount", "neck_pitch_gearhead"), ("neck_roll_motor_mount", "neck_roll_gearhead"),
     ("neck_yaw_motor_mount", "neck_yaw_gearhead"), ("head_side_plate_left", "eyes_tilt_gearhead"),
