@@ -21,17 +21,25 @@ def _near(a, b, margin=1.0):
     return np.all(lo - hi <= margin)
 
 
-@pytest.fixture(scope="module")
-def held(params, assembly):
-    """screw name -> names of the parts it touches; fails on any overlap."""
+def _contact(params, external):
+    """part -> how far apart counts as touching it. KiCad's STEP draws a board's PCB body without its copper and
+    mask, so what bears on the finished board stands that much above the body."""
     fit = params.geometry("clearances").num("fit_tolerance")
+    mask = params.root.node("boards").num("thickness") - external.board.pcb.BoundingBox().zlen
+    return lambda part: fit + (mask if part.kind == "board" else 0.0)
+
+
+@pytest.fixture(scope="module")
+def held(params, assembly, external):
+    """screw name -> names of the parts it touches; fails on any overlap."""
+    contact = _contact(params, external)
     out = {}
     for screw in _screws(params, assembly):
         touched = []
         for other in assembly.parts:
             if other is screw or other.link != screw.link or not _near(screw, other):
                 continue
-            if interference._distance(screw.shape, other.shape) < fit:
+            if interference._distance(screw.shape, other.shape) < contact(other):
                 overlap = screw.shape.intersect(other.shape).Volume()
                 assert overlap < interference.VOLUME_TOLERANCE, f"{screw.name} cuts into {other.name}: {overlap:.2f} mm^3"
                 touched.append(other.name)
@@ -51,7 +59,7 @@ def test_every_screw_joins_two_parts(held):
     ("head_side_plate_left", "head_top_bar"), ("head_side_plate_right", "head_top_bar"),
     ("face_plate", "head_side_plate_left"), ("face_plate", "head_side_plate_right"),
     ("neck_pitch_motor_mount", "neck_upright_left"), ("neck_roll_motor_mount", "neck_pitch_stage"),
-    ("neck_yaw_motor_mount", "head_floor"),
+    ("neck_yaw_motor_mount", "head_floor"), ("eyes_tilt_motor_clamp", "head_back_plate"),
     # every gearhead hangs on four M2 through the plate its flange bears on
     ("neck_pitch_motor_mount", "neck_pitch_gearhead"), ("neck_roll_motor_mount", "neck_roll_gearhead"),
     ("neck_yaw_motor_mount", "neck_yaw_gearhead"), ("head_side_plate_left", "eyes_tilt_gearhead"),
@@ -92,4 +100,61 @@ def test_a_screw_too_long_for_the_gearhead_threads_is_named(params, external, tm
     path = tmp_path / "long-screws.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ParameterError, match=r"purchased\.iso4762-M2x8: reaches 8.2 mm into eyes_tilt's gearhead"):
+        build_all(load(path), external)
+
+
+def _standoffs(params, assembly):
+    return [p for p in assembly.parts
+            if p.kind == "purchased" and params.purchased(p.design).text("kind") == "standoff"]
+
+
+def test_every_board_is_clamped_at_its_four_holes(params, assembly, external):
+    """Each board bears on four standoffs below it and is clamped by four standoffs or screws above it, the
+    lowest standoffs stand on the flange, and nothing in the stack cuts into anything."""
+    contact = _contact(params, external)
+    stack = [p for p in _standoffs(params, assembly) + _screws(params, assembly) if p.name.startswith("board_")]
+    assert len(stack) == 4 * (int(params.root.node("boards").num("count")) + 1)
+    flange = next(p for p in assembly.parts if p.name == "neck_base_flange")
+    for board in [p for p in assembly.parts if p.kind == "board"]:
+        bottom = board.shape.BoundingBox().zmin   # the pins reach below the PCB; its bottom face is the origin
+        z = board.placement.toTuple()[0][2]
+        below, above = [], []
+        for part in stack:
+            if interference._distance(board.shape, part.shape) < contact(board):
+                assert board.shape.intersect(part.shape).Volume() < interference.VOLUME_TOLERANCE, part.name
+                (below if part.placement.toTuple()[0][2] < z else above).append(part)
+        assert len(below) == 4 and len(above) == 4, (board.name, [p.name for p in below], [p.name for p in above])
+        assert bottom < z
+        centres = {tuple(np.round(p.placement.toTuple()[0][:2], 3)) for p in below + above}
+        assert len(centres) == 4, (board.name, centres)
+    on_flange = [p for p in stack if interference._distance(flange.shape, p.shape) < contact(flange)]
+    assert sorted(p.name for p in on_flange) == [f"board_standoff_0_{i}" for i in range(4)]
+    for part in on_flange:
+        assert flange.shape.intersect(part.shape).Volume() < interference.VOLUME_TOLERANCE, part.name
+
+
+def test_a_stack_pitch_no_standoff_gives_is_named(params, external, tmp_path):
+    import yaml
+    from robogene_head.params import ParameterError, load
+    from robogene_head.parts import build_all
+    data = yaml.safe_load(params.path.read_text())
+    data["boards"]["stack_pitch"] = 14
+    path = tmp_path / "pitch.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ParameterError, match=r"boards\.stack_pitch: 14.0 must be a standoff length plus the board "
+                                             r"thickness: standoff-M3x12-MF gives 13.6"):
+        build_all(load(path), external)
+
+
+def test_a_top_screw_too_long_for_the_standoff_is_named(params, external, tmp_path):
+    import yaml
+    from robogene_head.params import ParameterError, load
+    from robogene_head.parts import build_all
+    data = yaml.safe_load(params.path.read_text())
+    data["purchased"]["iso7380-M3x16"] = dict(data["purchased"]["iso7380-M3x12"], length=16)
+    data["boards"]["standoffs"]["screw"] = "iso7380-M3x16"   # 14.4 mm past the board, the thread is 11 deep
+    path = tmp_path / "screw.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ParameterError, match=r"boards\.standoffs\.screw: reaches 14.4 mm past the board into a "
+                                             r"11 mm deep female thread"):
         build_all(load(path), external)

@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..external import ExternalGeometry
 from ..params import HeadParameters
 from .base import Part
-from . import boards, covers, eyes, face, head_frame, neck
+from . import board_stack, boards, covers, eyes, face, head_frame, neck
 
 
 def build_all(params: HeadParameters, external: ExternalGeometry) -> list[Part]:
@@ -16,6 +16,7 @@ def build_all(params: HeadParameters, external: ExternalGeometry) -> list[Part]:
         parts.extend(family.build(params))
     parts += face.build(params, external)
     parts += boards.build(params, external.board)
+    parts += board_stack.build(params, external.board)
     names = [p.name for p in parts]
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:

@@ -3,15 +3,26 @@
 """Head frame (floor, side plates, back plate, top bar) with the yaw and eye-tilt drives it carries."""
 from __future__ import annotations
 
+import cadquery as cq
+
 from .. import geom
-from ..params import HeadParameters
+from ..params import HeadParameters, ParameterError
 from . import gearhead_screws, head_joins, mounts, neck, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
+from .mounts import FIXING_CLEARANCE
 
 YAW_FIXINGS = tuple((sx * 10.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1))   # about the yaw motor axis
 YAW_SLOT = 2.0
 YAW_MOUNT_NOTE = "3.4 x 5.4 slots along x: M3 into the floor, slide to tension the belt; 4 x 2.2 on the gearhead's bolt circle"
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
+# Tilt motor clamp: two M3 under the motor, CLAMP_SCREW_DY either side of its middle, CLAMP_SCREW_BELOW under its
+# body, reaching CLAMP_SCREW_ENGAGEMENT into the back plate's tapped holes.
+CLAMP_SCREW = "iso7380-M3x8"
+CLAMP_SCREW_DY = (-4.0, 4.0)
+CLAMP_SCREW_BELOW = 4.5
+CLAMP_SCREW_ENGAGEMENT = 4.0
+CLAMP_COUNTERBORE = 6.5     # for the 5.7 mm button heads
+CLAMP_HALF_WIDTH = 7.5      # along the motor axis; the gearhead and the encoder are 1 mm beyond
 # The tilt gearhead's flange bears on the left side plate's inner face; its screws come from outside.
 
 
@@ -52,8 +63,8 @@ def build(params: HeadParameters) -> list[Part]:
                     *joins.holes["head_side_plate"])
     side = geom.single_solid(side, "side plate")
     side_right = side.mirror("XZ")
-    back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"]),
-                             "back plate")
+    back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"],
+                                      *tilt_clamp_back_holes(params)), "back plate")
     top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
     top = geom.single_solid(geom.cut(top, *joins.holes["head_top_bar"]), "top bar")
     notes = head_joins.NOTES
@@ -103,9 +114,52 @@ def build(params: HeadParameters) -> list[Part]:
                       "head_frame", "machined", mounts.pulley(params, tilt_teeth, tilt_gear.num("shaft_diameter")),
                       loc(tmx, hw + 1, tmz, rx=-90),
                       note=mounts.pulley_note(params, tilt_teeth, tilt_gear.num("shaft_diameter")), **al))
-    y_motor = inner - tilt_gear.num("length") - tilt_motor.num("length") / 2
-    clamp = geom.cut(geom.box(x0 + bt, tmx + 10, y_motor - 5, y_motor + 5, tmz - 12, tmz + 12),
-                     geom.cyl("y", tilt_motor.num("diameter"), y_motor - 6, y_motor + 6, (tmx, tmz)))
-    parts.append(Part("eyes_tilt_motor_clamp", "eyes_tilt_motor_clamp", "head_frame", "printed",
-                      geom.single_solid(clamp, "tilt motor clamp"), material="petg-printed", color=PRINTED))
-    return parts + joins.screws
+    clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
+                                            inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
+    parts.append(clamp)
+    return parts + clamp_screws + joins.screws
+
+
+def _tilt_motor_clamp(params: HeadParameters, inner: float, x_back: float, tmx: float, tmz: float,
+                      y_motor: float) -> tuple[Part, list[Part]]:
+    """The printed block that holds the tilt motor's body against the back plate's inner face (x_back), and its
+    two M3 screws: through a lug under the motor, heads sunk in counterbores from the front, into M3 holes
+    tapped through the back plate."""
+    motor = params.purchased(params.drive("eyes_tilt").text("motor"))
+    screw = params.purchased(CLAMP_SCREW)
+    r = motor.num("diameter") / 2
+    z_screw = tmz - r - CLAMP_SCREW_BELOW
+    bt = params.geometry("head", "back_plate").num("thickness")
+    if CLAMP_SCREW_ENGAGEMENT > bt:
+        raise ParameterError(f"{params.path}: geometry.head.back_plate.thickness: {bt:g} is less than the "
+                             f"{CLAMP_SCREW_ENGAGEMENT:g} mm the tilt motor clamp's screws reach into it")
+    seat = x_back + screw.num("length") - CLAMP_SCREW_ENGAGEMENT   # the heads bear here, facing +x
+    x_front = tmx + 10
+    block = geom.box(x_back, x_front, y_motor - CLAMP_HALF_WIDTH, y_motor + CLAMP_HALF_WIDTH,
+                     z_screw - CLAMP_COUNTERBORE / 2 - 2, tmz + 12)
+    tools = [geom.cyl("y", motor.num("diameter"), y_motor - CLAMP_HALF_WIDTH - 1, y_motor + CLAMP_HALF_WIDTH + 1,
+                      (tmx, tmz))]
+    screws = []
+    for i, dy in enumerate(CLAMP_SCREW_DY):
+        tools += [geom.cyl("x", FIXING_CLEARANCE, x_back - 1, x_front + 1, (y_motor + dy, z_screw)),
+                  geom.cyl("x", CLAMP_COUNTERBORE, seat, x_front + 1, (y_motor + dy, z_screw))]
+        screws.append(purchased.screw(params, f"tilt_clamp_screw_{i}", CLAMP_SCREW, "head_frame",
+                                      loc(seat, y_motor + dy, z_screw, ry=-90)))
+    clamp = Part("eyes_tilt_motor_clamp", "eyes_tilt_motor_clamp", "head_frame", "printed",
+                 geom.single_solid(geom.cut(block, *tools), "tilt motor clamp"), material="petg-printed",
+                 color=PRINTED)
+    return clamp, screws
+
+
+def tilt_clamp_back_holes(params: HeadParameters) -> list[cq.Shape]:
+    """The clamp screws' tapped holes through the back plate (head frame), drawn at the thread."""
+    h = params.geometry("head")
+    x0, bt = h.node("floor").num("x_min"), h.node("back_plate").num("thickness")
+    tm = h.node("tilt_motor")
+    motor = params.purchased(params.drive("eyes_tilt").text("motor"))
+    gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
+    inner = h.node("floor").num("half_width") - h.node("side_plate").num("thickness")
+    y_motor = inner - gear.num("length") - motor.num("length") / 2
+    z_screw = tm.num("z") - motor.num("diameter") / 2 - CLAMP_SCREW_BELOW
+    d = params.purchased(CLAMP_SCREW).num("diameter")
+    return [geom.cyl("x", d, x0 - 1, x0 + bt + 1, (y_motor + dy, z_screw)) for dy in CLAMP_SCREW_DY]

@@ -30,7 +30,8 @@ NOTES = {
                   "drawn at 3.0, for the yaw motor mount; 4.4 x 6.4 slots 2.2 deep for its gearhead screws' heads",
     "head_side_plate": "M3 tapped 8 deep (tap drill 2.5) in front and bottom edges, drawn at 3.0; 2.4 through for "
                        "M2; at the tilt motor hole " + gearhead_screws.NOTE,
-    "head_back_plate": "M2 tapped 8 deep (tap drill 1.6) in bottom and side edges, drawn at 2.0",
+    "head_back_plate": "M2 tapped 8 deep (tap drill 1.6) in bottom and side edges, drawn at 2.0; 2 x M3 tapped "
+                       "through (tap drill 2.5), drawn at 3.0, for the tilt motor clamp",
     "head_top_bar": "4 x M2 tapped 8 deep (tap drill 1.6) in the ends, drawn at 2.0",
 }
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
-from . import gearhead_screws, mounts, purchased
+from . import board_stack, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -43,7 +43,8 @@ def _base(params: HeadParameters) -> list[Part]:
                      geom.box(-L / 2 + 20, -L / 2 + 40, -12, 12, -T - 1, 1))  # board cable pass-through
     flange = geom.cut(geom.box(-fl.num("length") / 2, fl.num("length") / 2, -fl.num("width") / 2, fl.num("width") / 2, 0, ft),
                       *[geom.cyl("z", 3.4, -1, ft + 1, c) for c in corners],
-                      *[geom.cyl("z", 6.5, -1, ft + 1, (sx * 40, sy * 40)) for sx in (-1, 1) for sy in (-1, 1)])
+                      *[geom.cyl("z", 6.5, -1, ft + 1, (sx * 40, sy * 40)) for sx in (-1, 1) for sy in (-1, 1)],
+                      *board_stack.flange_holes(params, ft))
     z_flange = -T - bay - ft
 
     bearing = params.purchased(params.drive("neck_pitch").text("bearing"))
@@ -62,7 +63,7 @@ def _base(params: HeadParameters) -> list[Part]:
         Part("neck_base_plate", "neck_base_plate", "neck_base", "machined", geom.single_solid(plate, "plate"),
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_base_flange", "neck_base_flange", "neck_base", "machined", geom.single_solid(flange, "flange"),
-             loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM),
+             loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM, note=board_stack.FLANGE_NOTE),
         Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM,
              note=UPRIGHT_NOTE),
         Part("neck_upright_right", "neck_upright", "neck_base", "machined", upright, loc(rz=180),

@@ -85,10 +85,17 @@ def screw(params: HeadParameters, name: str, key: str, link: str, placement: cq.
     return _purchased(params, name, key, link, shape, placement, DARK)
 
 
+STUD_WEB = 1.0   # mm of solid hex between a male-female standoff's stud and its female thread
+
+
 def standoff(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
-    """Hex prism z 0..length with a thread-size bore (the mating screws fill it)."""
+    """Hex prism z 0..length with a thread-size bore (the mating screws fill it). A male-female standoff (one with
+    a stud_length) has its threaded stud below, z -stud_length..0, and a blind bore down to z = STUD_WEB."""
     s = params.purchased(key)
     corner = s.num("across_flats") / math.cos(math.radians(30))
     hexagon = cq.Workplane("XY").polygon(6, corner).extrude(s.num("length")).val()
-    shape = hexagon.cut(geom.cyl("z", s.num("thread"), -1, s.num("length") + 1))
+    male = s.has("stud_length")
+    shape = hexagon.cut(geom.cyl("z", s.num("thread"), STUD_WEB if male else -1, s.num("length") + 1))
+    if male:
+        shape = geom.union(shape, geom.cyl("z", s.num("thread"), -s.num("stud_length", positive=True), 0))
     return _purchased(params, name, key, link, geom.single_solid(shape, name), placement, STEEL)
