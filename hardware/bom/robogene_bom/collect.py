@@ -47,6 +47,8 @@ def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, 
         if part.kind == "purchased":
             counts.setdefault(part.design, []).append(part.name)
     for key, joint, teeth in belts:
+        if key in counts:   # placed in the assembly, counted with the parts
+            continue
         counts.setdefault(key, []).append(f"{joint} belt ({teeth} teeth)")
     lines = [Line(catalog.get(key, f"CAD part {users[0]}"), len(users), users) for key, users in counts.items()]
     by_mpn = catalog.by_mpn()

@@ -26,7 +26,7 @@ PURCHASED_KINDS = {
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
-    "belt": ("mass",),
+    "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),
 }
 
 

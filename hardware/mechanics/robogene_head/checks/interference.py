@@ -39,6 +39,8 @@ FITS = [
     ("neck_yaw_bearing", "neck_roll_stage"),
     ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
     ("*_eye_pan_gearhead", "*_eye_cup"),
+    ("neck_yaw_belt", "neck_yaw_joint_pulley"),     # the belt runs on the pulley of the other link
+    ("eyes_tilt_belt", "eyes_tilt_joint_pulley"),
 ]
 
 

@@ -3,12 +3,14 @@
 """Head frame (floor, side plates, back plate, top bar) with the yaw and eye-tilt drives it carries."""
 from __future__ import annotations
 
+import math
+
 import cadquery as cq
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
 from . import gearhead_screws, head_joins, mounts, neck, purchased
-from .base import ALUMINIUM, PRINTED, Part, loc
+from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 from .mounts import FIXING_CLEARANCE
 
 YAW_FIXINGS = tuple((sx * 10.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1))   # about the yaw motor axis
@@ -117,7 +119,34 @@ def build(params: HeadParameters) -> list[Part]:
     clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
                                             inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
     parts.append(clamp)
-    return parts + clamp_screws + joins.screws
+    return parts + clamp_screws + belt_parts(params) + joins.screws
+
+
+def belt_parts(params: HeadParameters) -> list[Part]:
+    """The two belt loops, on the head frame, which carries both drives' motors. Each joint pulley turns about
+    its own axis, the joint's, so the loop around it is the same at every joint angle: one fixed envelope."""
+    h = params.geometry("head")
+    hw = h.node("floor").num("half_width")
+    belts = {joint: (key, teeth) for key, joint, teeth in mounts.belts(params)}
+    stock = params.purchased(params.geometry("pulleys").text("belt"))
+    pitch = params.geometry("pulleys").num("pitch_mxl")
+    yaw, tilt = params.geometry("pulleys", "yaw"), params.geometry("pulleys", "tilt")
+    ym = h.num("yaw_motor_x")
+    tx, _, tz = params.joints["eyes_tilt"].origin
+    tmx, tmz = h.node("tilt_motor").num("x"), h.node("tilt_motor").num("z")
+    # pulley frames: the yaw pulleys' z 0..width from the drop below the floor, the tilt pulleys' along +y from
+    # 1 mm outside the left side plate; the loop's x axis points from the joint pulley to the motor pulley
+    loops = [("neck_yaw", abs(ym), yaw, loc(0, 0, -neck.yaw_pulley_drop(params), rz=0 if ym > 0 else 180)),
+             ("eyes_tilt", math.hypot(tmx - tx, tmz - tz), tilt,
+              loc(tx, hw + 1, tz, ry=math.degrees(math.atan2(-(tmz - tz), tmx - tx)), rx=-90))]
+    out = []
+    for joint, distance, teeth, placement in loops:
+        key, belt_teeth = belts[joint]
+        shape = mounts.belt_loop(params, distance, int(teeth.num("joint_teeth")), int(teeth.num("motor_teeth")))
+        out.append(Part(f"{joint}_belt", key, "head_frame", "purchased", shape, placement,
+                        mass=belt_teeth * pitch / 1000 * stock.num("mass_per_metre"), color=DARK,
+                        note="belt back around the pulleys; its teeth sit in the pulley envelopes"))
+    return out
 
 
 def _tilt_motor_clamp(params: HeadParameters, inner: float, x_back: float, tmx: float, tmz: float,

@@ -8,11 +8,13 @@ import math
 import cadquery as cq
 
 from .. import geom
-from ..params import HeadParameters
+from ..params import HeadParameters, ParameterError
 from . import gearhead_screws
 
 FIXING_CLEARANCE = 3.4   # M3, ISO 273 medium
 FIXING_SCREW = "iso7380-M3x8"
+PULLEY_FLANGE = 0.6          # thickness of each pulley flange
+PITCH_DIFFERENTIAL = 0.508   # MXL: pitch diameter less outside diameter
 
 
 def mount_plate(outline: tuple[float, float, float, float], thickness: float, hole: float, gearhead_diameter: float,
@@ -40,10 +42,10 @@ def pitch_diameter(params: HeadParameters, teeth: int) -> float:
 def pulley(params: HeadParameters, teeth: int, bore: float) -> cq.Shape:
     """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges."""
     width = params.geometry("pulleys").num("width", positive=True)
-    outside = pitch_diameter(params, teeth) - 0.508  # MXL pitch-line differential
-    flange = outside + 3.0
-    body = geom.union(geom.cyl("z", flange, 0, 0.8), geom.cyl("z", outside, 0.8, width - 0.8),
-                      geom.cyl("z", flange, width - 0.8, width))
+    outside = pitch_diameter(params, teeth) - PITCH_DIFFERENTIAL
+    flange, f = outside + 3.0, PULLEY_FLANGE
+    body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
+                      geom.cyl("z", flange, width - f, width))
     return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + 1)), f"pulley_{teeth}T")
 
 
@@ -56,7 +58,7 @@ def belt_teeth(params: HeadParameters, centre_distance: float, teeth_a: int, tee
 
 
 def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
-    """(catalog key, joint, teeth) of the two timing belts; they have no solid in the assembly."""
+    """(catalog key, joint, teeth) of the two timing belts (head_frame.belt_parts places their envelopes)."""
     head = params.geometry("head")
     tilt = params.joints["eyes_tilt"].origin
     tm = head.node("tilt_motor")
@@ -68,6 +70,37 @@ def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
         teeth = belt_teeth(params, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
         out.append((f"mxl-belt-{teeth}T", joint, teeth))
     return out
+
+
+def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teeth_b: int) -> cq.Shape:
+    """Envelope of a closed belt around two pulleys, in pulley a's frame with pulley b at (centre_distance, 0): the
+    belt's back (thickness less tooth height) wrapped on both pulleys' outside diameters and along the tangent
+    spans between them, centred across the pulleys' width (z). The teeth sit in the grooves, inside the pulley
+    envelopes, so they are left out. The section comes from the purchased belt stock named by pulleys.belt."""
+    key = params.geometry("pulleys").text("belt")
+    belt = params.purchased(key)
+    width = params.geometry("pulleys").num("width", positive=True)
+    belt_width = belt.num("width", positive=True)
+    back = belt.num("thickness", positive=True) - belt.num("tooth_height", positive=True)
+    if back <= 0:
+        raise ParameterError(f"{params.path}: purchased.{key}: thickness must exceed tooth_height (the belt's back)")
+    if belt_width > width - 2 * PULLEY_FLANGE:
+        raise ParameterError(f"{params.path}: purchased.{key}: a {belt_width:g} mm wide belt does not run between "
+                             f"the flanges of {width:g} mm pulleys ({width - 2 * PULLEY_FLANGE:g} mm apart)")
+    ra = (pitch_diameter(params, teeth_a) - PITCH_DIFFERENTIAL) / 2
+    rb = (pitch_diameter(params, teeth_b) - PITCH_DIFFERENTIAL) / 2
+    z0, z1 = (width - belt_width) / 2, (width + belt_width) / 2
+
+    def hull(extra: float, lo: float, hi: float) -> cq.Shape:
+        r1, r2 = ra + extra, rb + extra
+        s = (r1 - r2) / centre_distance
+        c = math.sqrt(1 - s * s)
+        quad = [(r1 * s, r1 * c), (centre_distance + r2 * s, r2 * c),
+                (centre_distance + r2 * s, -r2 * c), (r1 * s, -r1 * c)]
+        span = cq.Workplane("XY").workplane(offset=lo).polyline(quad).close().extrude(hi - lo).val()
+        return geom.union(geom.cyl("z", 2 * r1, lo, hi), geom.cyl("z", 2 * r2, lo, hi, (centre_distance, 0)), span)
+
+    return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
 def pulley_note(params: HeadParameters, teeth: int, bore: float) -> str:
