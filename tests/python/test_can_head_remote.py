@@ -10,13 +10,13 @@ state:o), and the paper's section 3.3 program (the C++ client, encoders from sta
 clients cannot tell the two apart."""
 from __future__ import annotations
 
-import re
-import subprocess
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+
+import paper_program
 
 import robogene
 from robogene.dev import IControlMode, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
@@ -196,13 +196,4 @@ def test_a_remote_client_moves_every_joint_with_encoders_tracking(served_head, n
 def test_the_paper_section_3_3_program_runs_unchanged(served_head, robogene_bin, yarp_env):
     """The C++ remote_controlboard (encoders from stateExt:o, the velocity move on command:i) in the
     paper's program: joint 0 moves towards 40 deg at 5 deg/s, joint 1 runs at 5 deg/s."""
-    program = Path(robogene_bin).parent / "paper_section_3_3"
-    run = subprocess.run([str(program), "--device", "remote_controlboard", "--remote", "/head", "--local", "/paper",
-                          "--seconds", "1.5"], capture_output=True, text=True, env=yarp_env, timeout=30)
-    assert run.returncode == 0, run.stderr
-    m = re.fullmatch(r"t=(\S+) s  joint 0: +(\S+) deg  joint 1: +(\S+) deg", run.stdout.splitlines()[-1])
-    assert m, run.stdout
-    t, j0, j1 = (float(g) for g in m.groups())
-    # 5 deg/s after a 0.05 s ramp, less one state period when remote.
-    assert 5 * (t - 0.2) < j0 <= 5 * t + 1e-6, run.stdout
-    assert 5 * (t - 0.2) < j1 <= 5 * t + 1e-6, run.stdout
+    paper_program.run_against(robogene_bin, yarp_env, "/head", 1.5)

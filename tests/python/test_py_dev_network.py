@@ -5,12 +5,11 @@
 driven by the C++ section 3.3 program (remote_controlboard)."""
 from __future__ import annotations
 
-import os
-import re
-import subprocess
 import time
 
 import pytest
+
+import paper_program
 
 from robogene import Bottle, Network, RpcClient
 from robogene.dev import DeviceDriver, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
@@ -61,16 +60,7 @@ def test_a_python_device_served_to_the_cpp_section_3_3_program(name_server, robo
         with ControlboardNws(motor.view(DeviceDriver), "/pymotors", network=network) as server:
             assert server.port_names() == ["/pymotors/rpc:i", "/pymotors/command:i", "/pymotors/state:o",
                                            "/pymotors/stateExt:o"]
-            program = os.path.join(os.path.dirname(robogene_bin), "paper_section_3_3")
-            run = subprocess.run([program, "--device", "remote_controlboard", "--remote", "/pymotors",
-                                  "--local", "/paper", "--seconds", "1"], capture_output=True, text=True,
-                                 env=yarp_env, timeout=30)
-            assert run.returncode == 0, run.stderr
-            m = re.fullmatch(r"t=(\S+) s  joint 0: +(\S+) deg  joint 1: +(\S+) deg", run.stdout.splitlines()[-1])
-            assert m, run.stdout
-            t, j0, j1 = (float(g) for g in m.groups())
-            assert 5 * (t - 0.2) < j0 <= 5 * t + 1e-6, run.stdout
-            assert 5 * (t - 0.2) < j1 <= 5 * t + 1e-6, run.stdout
+            paper_program.run_against(robogene_bin, yarp_env, "/pymotors", 1)
             # The velocity move came on the command port (udp), the rest by RPC: the Python device has them.
             with RpcClient(server="/pymotors/rpc:i", network=network) as client:
                 reply = client.call(Bottle.from_text("[get] [vmo] 1"))
