@@ -30,11 +30,18 @@ $(STAMPS)/py-hardware: tools/setup/requirements-hardware.txt $(VENV)/.stamp | $(
 	$(PY) -m pip install -q --disable-pip-version-check -r $<
 	touch $@
 
-$(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS) $(BOARD_STEP)) $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
-	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b)) \
-	  $(if $(BOARD_STEP),--board-step $(BOARD_STEP))
+# BATCH=N prices the BOM for a batch of N heads (default: bom.batch in the parameter file). The value is kept in
+# a file that changes only when BATCH does, so a new value rebuilds the package (only the BOM, by content hash).
+BATCH ?=
+$(FAB)/.batch: FORCE
+	@mkdir -p $(@D); echo '$(strip $(BATCH))' | cmp -s - $@ || echo '$(strip $(BATCH))' > $@
 
-.PHONY: fab test-hardware
+$(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS) $(BOARD_STEP)) $(FAB)/.batch \
+                      $(STAMPS)/apt-hardware $(STAMPS)/py-hardware
+	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b)) \
+	  $(if $(BOARD_STEP),--board-step $(BOARD_STEP)) $(if $(strip $(BATCH)),--batch $(strip $(BATCH)))
+
+.PHONY: fab test-hardware FORCE
 ALL_TARGETS  += fab
 TEST_TARGETS += test-hardware
 fab: $(FAB)/manifest.json
@@ -42,5 +49,6 @@ fab: $(FAB)/manifest.json
 test-hardware: $(FAB)/manifest.json
 	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider tests/hardware
 
-HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders)" \
+HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders);" \
+              "                BATCH=N prices the BOM for N heads" \
               "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests"

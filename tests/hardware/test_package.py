@@ -148,3 +148,25 @@ def test_second_build_rebuilds_nothing(fab, tmp_path):
     after = {p: p.stat().st_mtime_ns for p in stamp}
     assert after == stamp
     assert (fab / "bom" / "robogene-head-bom.csv").read_bytes() == before
+
+
+def _make_fab_commands(*variables: str) -> str:
+    """The commands `make fab` would run, without running them (-n), for the given make variables."""
+    result = subprocess.run(["make", "-n", "-C", str(REPO), "fab", *variables], capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr[-2000:]
+    return result.stdout
+
+
+def test_make_batch_prices_the_bom_for_that_many_heads():
+    assert "--batch 12" in _make_fab_commands("BATCH=12")
+    default = _make_fab_commands("BATCH=")
+    assert "robogene_head.fab" in default and "--batch" not in default
+
+
+@pytest.mark.parametrize("value, message", [("0", "BATCH must be at least 1 head, got 0"),
+                                            ("two", "BATCH must be a whole number of heads, got 'two'")])
+def test_a_bad_batch_is_named(value, message, capsys):
+    from robogene_head import fab as fab_cli
+    with pytest.raises(SystemExit) as exit_:
+        fab_cli.main(["--batch", value])
+    assert exit_.value.code == 2 and message in capsys.readouterr().err

@@ -331,6 +331,17 @@ def write_manifest(out: Path, params_text: bytes, board) -> dict:
     return manifest
 
 
+def _heads(text: str) -> int:
+    """A batch size from the command line (make's BATCH=): a whole number of heads, at least one."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"BATCH must be a whole number of heads, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"BATCH must be at least 1 head, got {value}")
+    return value
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", type=Path, default=REPO / "build" / "fab")
@@ -338,7 +349,7 @@ def main(argv=None) -> int:
     ap.add_argument("--board-bom", action="append", default=[],
                     help="CSV BOM of a KiCad board (Reference, Value, Footprint, MPN, Qty), merged boards.count times "
                          "per head, or PATH:N for N copies; repeatable")
-    ap.add_argument("--batch", type=int, default=None, help="number of heads for the batch cost (default: parameter file)")
+    ap.add_argument("--batch", type=_heads, default=None, help="number of heads for the batch cost (default: parameter file)")
     ap.add_argument("--board-step", type=Path, default=DEFAULT_BOARD_STEP,
                     help="the motor-control board's STEP from KiCad, placed boards.count times (default: %(default)s)")
     args = ap.parse_args(argv)
