@@ -77,6 +77,8 @@ class YarpTools:
                         "--name", name, "--GENERAL::Joints", str(joints))
         for suffix in ("rpc:i", "command:i", "state:o", "stateExt:o"):
             self._wait_active(proc, f"{name}/{suffix}", 30)
+        # The wrapper's ports are announced before it has attached the subdevice and started.
+        proc.wait_output(r"device active in background", 30)
         return proc
 
     def dev(self, *args: str) -> Proc:
