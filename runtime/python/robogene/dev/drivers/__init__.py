@@ -17,12 +17,14 @@ def _remote_grabber():
 
 
 def add_builtin_drivers(factory) -> None:
+    from ..wrappers import add_wrapper_devices
     factory.add("test_motor", "simulated control board: position and velocity moves, encoders", TestMotor)
     factory.add("fake_grabber", "simulated camera: a moving RGB test pattern", FakeGrabber)
     factory.add("remote_controlboard", "a control board served elsewhere (remote, local, server)",
                 _remote_controlboard)
     factory.add("remote_grabber", "a camera served elsewhere (remote, local, stream, timeout, server)",
                 _remote_grabber)
+    add_wrapper_devices(factory)
 
 
 __all__ = ["FakeGrabber", "TestMotor", "add_builtin_drivers"]

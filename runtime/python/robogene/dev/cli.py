@@ -1,0 +1,99 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""`python -m robogene.dev`, the Python `robogene dev` (the paper's yarpdev): builds a device
+configuration from --from FILE.ini and the command line (`--key value`, later wins), opens the
+device with the Python factory and serves it on the network until SIGINT / SIGTERM, then closes
+it, unregistering its ports.
+
+    python -m robogene.dev --device test_motor --name /motors
+    python -m robogene.dev --device controlBoard_nws_yarp --subdevice test_motor --name /motors
+    python -m robogene.dev --server 127.0.0.1:10000 --device fake_grabber --name /cam"""
+from __future__ import annotations
+
+import signal
+import sys
+import threading
+from typing import List, Optional, Sequence
+
+from .device_driver import DeviceDriver
+from .poly_driver import PolyDriver
+from .property import ConfigError, Property
+from .wrappers import NetworkWrapper, serve
+
+USAGE = "python -m robogene.dev [--server HOST:PORT] [--from FILE.ini] --device NAME [--key value ...]"
+
+
+class UsageError(Exception):
+    pass
+
+
+def device_config(args: Sequence[str]) -> Property:
+    given = Property.from_command_line(args)
+    config = Property("robogene dev configuration")
+    if given.check("from"):
+        path = given.get_string("from", "")
+        if not path:
+            raise UsageError("--from needs the name of an .ini file")
+        config = Property.from_ini_file(path)
+    config.merge(given)
+    if not config.get_string("device", ""):
+        raise UsageError("no device given: use --device NAME (or a `device` line in the --from file)")
+    return config
+
+
+def _wait_for_shutdown_signal() -> int:
+    """Blocks until SIGINT or SIGTERM; returns the signal number."""
+    received: List[int] = []
+    done = threading.Event()
+
+    def handler(signum, _frame):
+        received.append(signum)
+        done.set()
+
+    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        while not done.wait(0.5):  # a timed wait lets the handler run on the main thread
+            pass
+    finally:
+        for s, h in previous.items():
+            signal.signal(s, h)
+    return received[0]
+
+
+def run(args: Sequence[str]) -> int:
+    config = device_config(args)
+    name = config.get_string("device", "")
+    device = PolyDriver()
+    if not device.open(config):
+        raise ConfigError(device.last_error)
+    server = None
+    try:
+        wrapper = device.view(NetworkWrapper)
+        if wrapper is None:
+            server = serve(device.view(DeviceDriver), config)
+            ports = server.port_names()
+        else:
+            ports = wrapper.port_names()
+        print(f"robogene dev: {name} serving on {' '.join(ports)}", file=sys.stderr, flush=True)
+        _wait_for_shutdown_signal()
+    finally:
+        if server is not None:
+            server.close()
+        device.close()
+    print(f"robogene dev: {name} closed", file=sys.stderr, flush=True)
+    return 0
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    args = list(sys.argv[1:] if argv is None else argv)
+    if args and args[0] in ("-h", "--help", "help"):
+        print(f"usage: {USAGE}\n\n{__doc__}")
+        return 0
+    try:
+        return run(args)
+    except UsageError as exc:
+        print(f"robogene dev: {exc}\nusage: {USAGE}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # a device or network failure: named, not a traceback
+        print(f"robogene dev: {exc}", file=sys.stderr)
+        return 1
