@@ -26,6 +26,9 @@ def test_package_report_has_no_interference(fab, params):
     assert (fab / "reports" / "interference.txt").read_text().startswith("interference check:")
 
 
+# Thirteen poses of the whole assembly's check, in this process (the build's sweep is cached): about a minute on an
+# idle 2-core machine, over two when it is shared.
+@pytest.mark.timeout(600)
 def test_end_stops_of_every_joint(params, assembly):
     poses = [{}]
     for name, (lo, hi) in params.control_limits.items():
