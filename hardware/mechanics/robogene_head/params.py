@@ -63,7 +63,8 @@ class Node:
     def keys(self) -> list[str]:
         return list(self._data.keys())
 
-    def num(self, key: str, *, positive: bool = False, minimum: float | None = None) -> float:
+    def num(self, key: str, *, positive: bool = False, minimum: float | None = None,
+            maximum: float | None = None) -> float:
         value = self.raw(key)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise self._fail(key, f"expected a number, got {value!r}")
@@ -71,6 +72,8 @@ class Node:
             raise self._fail(key, f"must be > 0, got {value!r}")
         if minimum is not None and value < minimum:
             raise self._fail(key, f"must be >= {minimum}, got {value!r}")
+        if maximum is not None and value > maximum:
+            raise self._fail(key, f"must be <= {maximum:g}, got {value!r}")
         return float(value)
 
     def text(self, key: str) -> str:
