@@ -17,6 +17,7 @@ YAW_FIXINGS = tuple((sx * 10.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1)) 
 YAW_SLOT = 2.0
 YAW_MOUNT_NOTE = "3.4 x 5.4 slots along x: M3 into the floor, slide to tension the belt; 4 x 2.2 on the gearhead's bolt circle"
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
+YAW_MOUNT_THICKNESS = 3.0
 # Tilt motor clamp: two M3 under the motor, CLAMP_SCREW_DY either side of its middle, CLAMP_SCREW_BELOW under its
 # body, reaching CLAMP_SCREW_ENGAGEMENT into the back plate's tapped holes.
 CLAMP_SCREW = "iso7380-M3x8"
@@ -50,14 +51,14 @@ def build(params: HeadParameters) -> list[Part]:
     tilt_flange = loc(tmx, hw, tmz, rx=90)   # gearhead_screws' flange frame: z from the plate's outer face inwards
     floor = geom.cut(geom.box(x0, x1, -hw, hw, -ft, 0),
                      geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
-                     geom.cyl("z", 8, -ft - 1, 1, (ym, 0)), *joins.holes["head_floor"],
+                     *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
                      *[geom.cyl("z", 3.0, -ft - 1, 1, (ym + fx, fy)) for fx, fy in YAW_FIXINGS],
                      *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(yaw_gear.num("diameter"), YAW_SLOT)])
     # Left side plate in its design frame; the right plate is its mirror image.
     face_z = h.vec("face_screw_z", 2)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
                     geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
-                    geom.cyl("y", tilt_gear.num("shaft_diameter") + 2, inner - 1, hw + 1, (tmx, tmz)),
+                    geom.cyl("y", mounts.hub_hole(params, tilt_gear.num("shaft_diameter")), inner - 1, hw + 1, (tmx, tmz)),
                     *[t.moved(tilt_flange) for t in gearhead_screws.holes(tilt_gear.num("diameter"), st)],
                     # M3 tapped holes for the face plate screws, modelled at the thread's size like every
                     # tapped hole of the head (the drawing's note gives the tap drill)
@@ -92,34 +93,45 @@ def build(params: HeadParameters) -> list[Part]:
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
     # Four M3 through slots into the floor: the plate slides along x to tension the belt.
     parts.append(Part("neck_yaw_motor_mount", "motor_mount_neck_yaw", "head_frame", "machined",
-                      mounts.mount_plate((-14, 14, -14, 14), 3, 8, yaw_gear.num("diameter"), YAW_FIXINGS, slot=YAW_SLOT,
-                                         counterbores=False),
+                      mounts.mount_plate((-14, 14, -14, 14), YAW_MOUNT_THICKNESS, 8, yaw_gear.num("diameter"),
+                                         YAW_FIXINGS, slot=YAW_SLOT, counterbores=False),
                       loc(ym, 0, 0), note=YAW_MOUNT_NOTE, **al))
     for i, (fx, fy) in enumerate(YAW_FIXINGS):
         parts.append(purchased.screw(params, f"yaw_mount_screw_{i}", mounts.FIXING_SCREW, "head_frame",
-                                     loc(ym + fx, fy, 3, rx=180)))
-    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, 3))
+                                     loc(ym + fx, fy, YAW_MOUNT_THICKNESS, rx=180)))
+    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, YAW_MOUNT_THICKNESS))
     # The 3 mm plate has no room for counterbores: the screw heads sit under it, in slotted pockets in the floor.
-    parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"), 3,
-                                    key=YAW_GEARHEAD_SCREW, counterbored=False)
-    yaw_teeth = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True))
-    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_gear.num('shaft_diameter'):g}", "head_frame",
-                      "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")),
-                      loc(ym, 0, -neck.yaw_pulley_drop(params)),
-                      note=mounts.pulley_note(params, yaw_teeth, yaw_gear.num("shaft_diameter")), **al))
-    # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside, motor held by a clamp.
+    parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"),
+                                    YAW_MOUNT_THICKNESS, key=YAW_GEARHEAD_SCREW, counterbored=False)
+    # The motor pulleys' hubs reach back along the gearhead shafts, through the floor and the mount plate here.
+    width = params.geometry("pulleys").num("width", positive=True)
+    drop = neck.yaw_pulley_drop(params)
+    yaw_teeth, yaw_bore = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True)), yaw_gear.num("shaft_diameter")
+    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_bore:g}", "head_frame", "machined",
+                      mounts.pulley(params, yaw_teeth, yaw_bore,
+                                    mounts.hub_length(params, drop - width + YAW_MOUNT_THICKNESS)),
+                      loc(ym, 0, -drop), note=mounts.pulley_note(params, yaw_teeth, yaw_bore, hub=True), **al))
+    # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside with its hub through the
+    # plate, motor held by a clamp.
     tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))
     parts += purchased.drive_stack(params, "eyes_tilt", "head_frame", loc(tmx, inner, tmz, rx=90))
     parts += gearhead_screws.screws(params, "eyes_tilt", "head_frame", tilt_flange, tilt_gear.num("diameter"), st)
-    tilt_teeth = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True))
-    parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_gear.num('shaft_diameter'):g}",
-                      "head_frame", "machined", mounts.pulley(params, tilt_teeth, tilt_gear.num("shaft_diameter")),
-                      loc(tmx, hw + 1, tmz, rx=-90),
-                      note=mounts.pulley_note(params, tilt_teeth, tilt_gear.num("shaft_diameter")), **al))
+    tilt_teeth, tilt_bore = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True)), tilt_gear.num("shaft_diameter")
+    parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_bore:g}", "head_frame", "machined",
+                      mounts.pulley(params, tilt_teeth, tilt_bore, mounts.hub_length(params, hw + 1 - inner)),
+                      loc(tmx, hw + 1 + width, tmz, rx=90),   # body y hw+1..hw+1+width, hub towards -y
+                      note=mounts.pulley_note(params, tilt_teeth, tilt_bore, hub=True), **al))
     clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
                                             inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
     parts.append(clamp)
     return parts + clamp_screws + belt_parts(params) + joins.screws
+
+
+def _yaw_hub_slot(params: HeadParameters, bore: float, ym: float, z0: float, z1: float) -> list[cq.Shape]:
+    """The floor's passage for the yaw motor pulley's hub: a slot along x, as the mount plate slides YAW_SLOT."""
+    d = mounts.hub_hole(params, bore)
+    return [geom.cyl("z", d, z0, z1, (ym - YAW_SLOT / 2, 0)), geom.cyl("z", d, z0, z1, (ym + YAW_SLOT / 2, 0)),
+            geom.box(ym - YAW_SLOT / 2, ym + YAW_SLOT / 2, -d / 2, d / 2, z0, z1)]
 
 
 def belt_parts(params: HeadParameters) -> list[Part]:

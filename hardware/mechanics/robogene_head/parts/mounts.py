@@ -39,14 +39,35 @@ def pitch_diameter(params: HeadParameters, teeth: int) -> float:
     return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / math.pi
 
 
-def pulley(params: HeadParameters, teeth: int, bore: float) -> cq.Shape:
-    """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges."""
+def pulley(params: HeadParameters, teeth: int, bore: float, hub_length: float = 0.0) -> cq.Shape:
+    """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges. A motor pulley
+    has a hub hub_length long from z = width, around the bore, so that it sits on most of its gearhead's shaft."""
     width = params.geometry("pulleys").num("width", positive=True)
     outside = pitch_diameter(params, teeth) - PITCH_DIFFERENTIAL
     flange, f = outside + 3.0, PULLEY_FLANGE
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
-    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + 1)), f"pulley_{teeth}T")
+    if hub_length > 0:
+        body = geom.union(body, geom.cyl("z", hub_diameter(params, bore), width, width + hub_length))
+    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + hub_length + 1)), f"pulley_{teeth}T")
+
+
+def hub_diameter(params: HeadParameters, bore: float) -> float:
+    return bore + 2 * params.geometry("pulleys", "hub").num("wall", positive=True)
+
+
+def hub_hole(params: HeadParameters, bore: float) -> float:
+    """Diameter of a hole a motor pulley's hub passes through."""
+    return hub_diameter(params, bore) + 2 * params.geometry("pulleys", "hub").num("clearance", positive=True)
+
+
+def hub_length(params: HeadParameters, from_pulley_to_flange: float) -> float:
+    """Hub length for a pulley whose body ends this far from its gearhead's flange face: up to the hub gap."""
+    gap = params.geometry("pulleys", "hub").num("gap", positive=True)
+    if from_pulley_to_flange <= gap:
+        raise ParameterError(f"{params.path}: geometry.pulleys.hub.gap: {gap:g} leaves no hub: the pulley ends "
+                             f"{from_pulley_to_flange:g} mm from its gearhead's flange")
+    return from_pulley_to_flange - gap
 
 
 def belt_teeth(params: HeadParameters, centre_distance: float, teeth_a: int, teeth_b: int) -> int:
@@ -103,7 +124,9 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
-def pulley_note(params: HeadParameters, teeth: int, bore: float) -> str:
-    """What the drawing of a pulley must say: its teeth are not modelled."""
-    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7; "
+def pulley_note(params: HeadParameters, teeth: int, bore: float, hub: bool = False) -> str:
+    """What the drawing of a pulley must say: its teeth are not modelled; a hub too thin for a set screw is
+    bonded to the shaft (kept short: the note is one line on the sheet)."""
+    fixing = ", hub bonded to the shaft" if hub else ""
+    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7{fixing}; "
             f"teeth not drawn: MXL profile")
