@@ -91,6 +91,14 @@ class Node:
                 raise self._fail(f"{key}[{i}]", f"expected a number, got {item!r}")
         return tuple(float(v) for v in value)
 
+    def points(self, key: str) -> list[tuple[float, float]]:
+        """A non-empty list of [x, y] points (hole positions and the like)."""
+        value = self.raw(key)
+        if not isinstance(value, list) or not value:
+            raise self._fail(key, f"expected a list of [x, y] points, got {value!r}")
+        items = Node({f"{key}[{i}]": item for i, item in enumerate(value)}, self._path, self._source)
+        return [items.vec(f"{key}[{i}]", 2) for i in range(len(value))]
+
     def __getitem__(self, key: str) -> Any:
         return self.raw(key)
 

@@ -8,31 +8,90 @@ import math
 import cadquery as cq
 
 from .. import geom
-from ..params import HeadParameters, ParameterError
+from ..params import HeadParameters, Node, ParameterError
 from . import gearhead_screws
 
-FIXING_CLEARANCE = 3.4   # M3, ISO 273 medium
-FIXING_SCREW = "iso7380-M3x8"
-PULLEY_FLANGE = 0.6          # thickness of each pulley flange
-PITCH_DIFFERENTIAL = 0.508   # MXL: pitch diameter less outside diameter
+FIXING_SCREW = "iso7380-M3x8"   # what holds a mount plate on the structure
 
 
-def mount_plate(outline: tuple[float, float, float, float], thickness: float, hole: float, gearhead_diameter: float,
-                fixings: tuple[tuple[float, float], ...] = (), slot: float = 0.0, counterbores: bool = True) -> cq.Shape:
-    """Flange plate in z 0..thickness with its axis at the origin, outline (x0, x1, y0, y1); the gearhead's flange
-    bears on z = thickness. A pilot hole for the output shaft, the gearhead's four M2 screw holes (counterbored
-    from z = 0 unless counterbores is False: gearhead_screws), and M3 clearance holes at `fixings` for the screws
-    that hold the plate on the structure, drawn as slots `slot` long along x where the plate must slide."""
+def clearance_hole(params: HeadParameters, screw: str) -> float:
+    """Clearance hole for a screw through a part (geometry.clearance_holes, by thread: M2, M3...)."""
+    thread = f"M{params.purchased(screw).num('diameter', positive=True):g}"
+    hole = params.geometry("clearance_holes").num(thread, positive=True)
+    if hole <= params.purchased(screw).num("diameter"):
+        raise ParameterError(f"{params.path}: geometry.clearance_holes.{thread}: {hole:g} does not clear an {thread}")
+    return hole
+
+
+def mount(params: HeadParameters, joint: str) -> Node:
+    return params.geometry("motor_mounts", joint)
+
+
+def mount_thickness(params: HeadParameters, joint: str) -> float:
+    return mount(params, joint).num("thickness", positive=True)
+
+
+def mount_fixings(params: HeadParameters, joint: str) -> list[tuple[float, float]]:
+    return mount(params, joint).points("fixings")
+
+
+def mount_slot(params: HeadParameters, joint: str) -> float:
+    """How far the plate slides along x on its fixings (0: it does not)."""
+    node = mount(params, joint)
+    return node.num("slot", minimum=0) if node.has("slot") else 0.0
+
+
+def mount_outline(params: HeadParameters, joint: str) -> tuple[float, float, float, float]:
+    x0, x1, y0, y1 = mount(params, joint).vec("outline", 4)
+    if not (x0 < 0 < x1 and y0 < 0 < y1):
+        raise ParameterError(f"{params.path}: geometry.motor_mounts.{joint}.outline: expected x0 < 0 < x1 and "
+                             f"y0 < 0 < y1 about the gearhead axis, got {[x0, x1, y0, y1]}")
+    return x0, x1, y0, y1
+
+
+def mount_plate(params: HeadParameters, joint: str, outline: tuple[float, float, float, float],
+                gearhead_diameter: float, counterbores: bool = True) -> cq.Shape:
+    """Flange plate of geometry.motor_mounts.<joint> in z 0..thickness with its axis at the origin, outline (x0, x1,
+    y0, y1); the gearhead's flange bears on z = thickness. A pilot hole for the output shaft, the gearhead's four
+    M2 screw holes (counterbored from z = 0 unless counterbores is False: gearhead_screws), and M3 clearance holes
+    at its fixings for the screws that hold the plate on the structure, drawn as slots along x where it slides."""
+    thickness, fixings, slot = mount_thickness(params, joint), mount_fixings(params, joint), mount_slot(params, joint)
+    hole = params.geometry("motor_mounts").num("pilot_hole", positive=True)
+    clearance = clearance_hole(params, FIXING_SCREW)
     x0, x1, y0, y1 = outline
     plate = geom.box(x0, x1, y0, y1, 0, thickness)
-    holes = [geom.cyl("z", hole, -1, thickness + 1), *gearhead_screws.holes(gearhead_diameter, thickness, counterbores)]
+    holes = [geom.cyl("z", hole, -1, thickness + 1),
+             *gearhead_screws.holes(params, gearhead_diameter, thickness, counterbores)]
     for x, y in fixings:
-        holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x - slot / 2, y)))
+        holes.append(geom.cyl("z", clearance, -1, thickness + 1, (x - slot / 2, y)))
         if slot > 0:
-            holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x + slot / 2, y)))
-            holes.append(geom.box(x - slot / 2, x + slot / 2, y - FIXING_CLEARANCE / 2, y + FIXING_CLEARANCE / 2,
+            holes.append(geom.cyl("z", clearance, -1, thickness + 1, (x + slot / 2, y)))
+            holes.append(geom.box(x - slot / 2, x + slot / 2, y - clearance / 2, y + clearance / 2,
                                   -1, thickness + 1))
-    return geom.single_solid(geom.cut(plate, *holes), "mount_plate")
+    return geom.single_solid(geom.cut(plate, *holes), f"motor_mount_{joint}")
+
+
+def mount_note(params: HeadParameters, joint: str) -> str:
+    """What the plate's drawing says about its holes."""
+    clearance, slot = clearance_hole(params, FIXING_SCREW), mount_slot(params, joint)
+    if slot > 0:
+        return (f"{clearance:g} x {clearance + slot:g} slots along x: M3 into the floor, slide to tension the belt; "
+                f"4 x {gearhead_screws.clearance(params):g} on the gearhead's bolt circle")
+    return f"{clearance:g} holes: M3 fixing screws. " + gearhead_screws.note(params)
+
+
+def pitch_differential(params: HeadParameters) -> float:
+    """MXL: pitch diameter less the teeth's outside diameter."""
+    return params.geometry("pulleys").num("pitch_differential", positive=True)
+
+
+def flange_thickness(params: HeadParameters) -> float:
+    return params.geometry("pulleys", "flange").num("thickness", positive=True)
+
+
+def plate_gap(params: HeadParameters) -> float:
+    """The pulleys' distance from the floor's underside and the left side plate's outer face."""
+    return params.geometry("pulleys").num("plate_gap", positive=True)
 
 
 def pitch_diameter(params: HeadParameters, teeth: int) -> float:
@@ -43,8 +102,8 @@ def pulley(params: HeadParameters, teeth: int, bore: float, hub_length: float = 
     """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges. A motor pulley
     has a hub hub_length long from z = width, around the bore, so that it sits on most of its gearhead's shaft."""
     width = params.geometry("pulleys").num("width", positive=True)
-    outside = pitch_diameter(params, teeth) - PITCH_DIFFERENTIAL
-    flange, f = outside + 3.0, PULLEY_FLANGE
+    outside = pitch_diameter(params, teeth) - pitch_differential(params)
+    flange, f = outside + 2 * params.geometry("pulleys", "flange").num("rim", positive=True), flange_thickness(params)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
     if hub_length > 0:
@@ -105,11 +164,12 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     back = belt.num("thickness", positive=True) - belt.num("tooth_height", positive=True)
     if back <= 0:
         raise ParameterError(f"{params.path}: purchased.{key}: thickness must exceed tooth_height (the belt's back)")
-    if belt_width > width - 2 * PULLEY_FLANGE:
+    between = width - 2 * flange_thickness(params)
+    if belt_width > between:
         raise ParameterError(f"{params.path}: purchased.{key}: a {belt_width:g} mm wide belt does not run between "
-                             f"the flanges of {width:g} mm pulleys ({width - 2 * PULLEY_FLANGE:g} mm apart)")
-    ra = (pitch_diameter(params, teeth_a) - PITCH_DIFFERENTIAL) / 2
-    rb = (pitch_diameter(params, teeth_b) - PITCH_DIFFERENTIAL) / 2
+                             f"the flanges of {width:g} mm pulleys ({between:g} mm apart)")
+    ra = (pitch_diameter(params, teeth_a) - pitch_differential(params)) / 2
+    rb = (pitch_diameter(params, teeth_b) - pitch_differential(params)) / 2
     z0, z1 = (width - belt_width) / 2, (width + belt_width) / 2
 
     def hull(extra: float, lo: float, hi: float) -> cq.Shape:
