@@ -229,9 +229,55 @@ def test_missing_value(tree):
 def test_speed_limit_beyond_the_wire(tree):
     errs, text = _errors(tree, "integral_limit: 300, max_velocity: 150, current_limit: 620}",
                          "integral_limit: 300, max_velocity: 2000, current_limit: 620}")
-    assert len(errs) == 1 and errs[0].startswith(
+    assert len(errs) == 2 and errs[0].startswith(
         f"{_at(text, 'max_velocity: 2000', skip=14)}: error: motor_control.joints.eyes_tilt.max_velocity: 2000 deg/s "
         "is 3666895 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
+    assert "2000 deg/s is faster than the drive can turn the joint" in errs[1]   # test_speed_limit_beyond_the_drive
+
+
+def test_speed_limit_beyond_the_drive(tree):
+    """neck_yaw: 7800 rpm through 66 x 36/14 is 275.8 deg/s; 300 fits the wire but not the drive."""
+    errs, text = _errors(tree, "integral_limit: 300, max_velocity: 200, current_limit: 1200}",
+                         "integral_limit: 300, max_velocity: 300, current_limit: 1200}")
+    assert errs == [f"{_at(text, 'max_velocity: 300', skip=14)}: error: motor_control.joints.neck_yaw.max_velocity: "
+                    "300 deg/s is faster than the drive can turn the joint: 275.8 deg/s (faulhaber-2224U012SR at its "
+                    "no-load speed through the 169.7:1 reduction)"]
+
+
+def test_slower_motor_lowers_the_speed_limit(tree):
+    """The check follows the motor's catalogue speed: at 4000 rpm the 1717 tilt drive reaches 74.5 deg/s."""
+    errs, _ = _errors(tree, "no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}")
+    assert any(e.endswith("motor_control.joints.eyes_tilt.max_velocity: 150 deg/s is faster than the drive can turn "
+                          "the joint: 74.47 deg/s (faulhaber-1717T012SR at its no-load speed through the 322.3:1 "
+                          "reduction)") for e in errs), errs
+
+
+def _edit(tree, *pairs: tuple[str, str]) -> None:
+    path = tree / "hardware" / "head-parameters.yaml"
+    text = path.read_text()
+    for old, new in pairs:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    path.write_text(text)
+
+
+@pytest.mark.parametrize("vergence, refused", [(1100, False), (1200, True)])
+def test_vergence_may_run_at_twice_the_pan_speed(tree, vergence, refused):
+    """Each eye turns by half the vergence. With 4000 rpm eye motors a pan turns at most 558 deg/s through its
+    43:1 gearhead, so vergence reaches 1116 deg/s (the wire takes up to 1339 deg/s of vergence)."""
+    _edit(tree, ("no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}"),
+          ("kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+           "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
+          ("kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 400,",
+           f"kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: {vergence},"))
+    if not refused:
+        assert _compile(tree).board_configs[0].joints[5].max_velocity == vergence
+        return
+    with pytest.raises(IdlErrors) as info:
+        _compile(tree)
+    assert [str(e).split(": error: ")[1] for e in info.value.errors] == [
+        "motor_control.joints.eyes_vergence.max_velocity: 1200 deg/s is faster than the drive can turn the joint: "
+        "1116 deg/s (faulhaber-1717T012SR at its no-load speed through the 43:1 reduction)"]
 
 
 def test_bitrate_must_match_the_protocol(tree):

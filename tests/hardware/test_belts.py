@@ -33,7 +33,7 @@ def test_the_belt_loop_is_as_long_as_the_belt(params, assembly):
         stock = params.purchased(params.geometry("pulleys").text("belt"))
         width, back = stock.num("width"), stock.num("thickness") - stock.num("tooth_height")
         mean = belt.local.Volume() / width / back   # a band of constant thickness: area = mean perimeter x back
-        expected = teeth * pitch - math.pi * mounts.PITCH_DIFFERENTIAL + math.pi * back
+        expected = teeth * pitch - math.pi * mounts.pitch_differential(params) + math.pi * back
         assert expected - pitch < mean <= expected, (joint, mean, expected)   # less than a tooth of slack
 
 

@@ -26,8 +26,35 @@ DIAMETER = re.compile(r"⌀\s*(\d+(?:\s*\.\s*\d+)?)")
 
 
 def pdf_text(pdf: Path) -> str:
-    return subprocess.run(["pdftotext", "-raw", str(pdf), "-"], capture_output=True, text=True, check=True,
-                          timeout=60).stdout
+    return unsplit(subprocess.run(["pdftotext", "-raw", str(pdf), "-"], capture_output=True, text=True, check=True,
+                                  timeout=60).stdout)
+
+
+def unsplit(text: str) -> str:
+    """Join the characters of a vertical label back into one line. A run of one-character lines is a label when
+    it holds a decimal point or starts with ⌀ ("⌀\n1\n1\n.\n5\n5" is ⌀11.55); other runs stay as they are,
+    since two one-digit labels print the same as a vertical two-digit one."""
+    out, run = [], []
+
+    def flush():
+        out.extend(["".join(run)] if len(run) > 1 and ("." in run or run[0] == "⌀") else run)
+        run.clear()
+    for line in text.split("\n"):
+        if len(line.strip()) == 1:
+            if line.strip() == "⌀":   # a diameter starts a new label
+                flush()
+            run.append(line.strip())
+            continue
+        flush()
+        out.append(line)
+    flush()
+    return "\n".join(out)
+
+
+def test_vertical_labels_are_read_whole():
+    text = unsplit("4× ⌀2.2\n⌀\n1\n1\n.\n5\n5\n⌀\n5\n.\n8\n⌀19\n6\n8\n112\n1\n6\n.\n5\nSCALE 1:1")
+    assert [float(d) for d in DIAMETER.findall(text)] == [2.2, 11.55, 5.8, 19]
+    assert numbers(text) == [4, 2.2, 11.55, 5.8, 19, 6, 8, 112, 16.5, 1, 1]
 
 
 def svg_text(svg: Path) -> str:

@@ -321,6 +321,7 @@ class _Reader:
                 self.fail(path + ("current_limit",), f"must be > 0, got {current}")
             self.fits(path + ("max_velocity",), max_velocity * counts, "set_max_velocity", "speed",
                       f"{max_velocity:g} deg/s")
+            self._within_drive(path + ("max_velocity",), name, max_velocity, [chain[m] for m in motors])
             self.fits(path + ("current_limit",), current, "set_current_limit", "current")
             lo, hi = self.mech["limits"][name]
             first = chain.get(motors[0], {})
@@ -331,6 +332,16 @@ class _Reader:
                 self.fits(path, bound * counts, "set_min_position", "position", f"the limit {bound:g} deg")
             axes[name] = axis
         return axes
+
+    def _within_drive(self, path: tuple, name: str, max_velocity: float, motors: list[dict]) -> None:
+        """A speed limit the drive cannot reach is a typo or a wrong part: the joint's top speed is its motors'
+        no-load speed through the reduction (the mechanics' drive_limits). Vergence turns each eye by half of
+        it (left = version + vergence / 2), so it reaches twice its motors' speed."""
+        slowest = min(motors, key=lambda m: m["drive_limits"]["velocity_deg_s"])
+        reach = slowest["drive_limits"]["velocity_deg_s"] * (2 if name == "eyes_vergence" else 1)
+        if max_velocity > reach:
+            self.fail(path, f"{max_velocity:g} deg/s is faster than the drive can turn the joint: {reach:.4g} deg/s "
+                      f"({slowest['motor']} at its no-load speed through the {slowest['reduction']:.4g}:1 reduction)")
 
     def _boards(self, mc: tuple, axes: dict[str, AxisConfig]) -> list[Board]:
         names = self.get(("boards", "names"), list, "a list of board names")

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Keep the generated tables in docs/fabricate.md equal to the package (python -m robogene_head.docs_sync).
 
-The doc holds copies of the BOM and mass tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
+The doc holds copies of the BOM, mass and drive-limit tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
 --check (used by the tests) fails when they differ from build/fab, --update rewrites them."""
 from __future__ import annotations
 
@@ -30,9 +30,21 @@ def mass_table(mass: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def drive_table(joints: dict) -> str:
+    rows = ["| joint | motor | gearhead | reduction | effort (N m) | effort set by | top speed (deg/s) | belt pull (N) |",
+            "|---|---|---|---:|---:|---|---:|---:|"]
+    for j in joints["joints"]:
+        lim = j["drive_limits"]
+        pull = f"{lim['belt_pull_N']:.0f}" if "belt_pull_N" in lim else "—"
+        rows.append(f"| {j['name']} | {j['motor']} | {j['gearhead']} | {j['reduction']:.1f} | {lim['effort_Nm']:.3f} | "
+                    f"{lim['limited_by']} | {lim['velocity_deg_s']:.0f} | {pull} |")
+    return "\n".join(rows) + "\n"
+
+
 def blocks(fab: Path) -> dict[str, str]:
     return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
-            "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text()))}
+            "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text())),
+            "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text()))}
 
 
 def sync(doc_text: str, wanted: dict[str, str]) -> str:

@@ -1,28 +1,19 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """The numbers a motor-control board configuration needs, derived from the parameter file: joint order and
-limits of the control board, and per physical joint the motor, the total reduction (gearhead x belt) and the
-encoder resolutions. Written to build/fab/config/head-joints.json for the drivers and board configs."""
+limits of the control board, and per physical joint the motor, the total reduction (gearhead x belt), the
+encoder resolutions and what the drive can deliver (drive_limits). Written to build/fab/config/head-joints.json
+for the drivers and board configs."""
 from __future__ import annotations
 
-import math
-
+from . import drive_limits
+from .drive_limits import reduction  # the board-config generator reads it from here too
 from .params import CHAIN_JOINTS, HeadParameters
-
-BELTED = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}
-
-
-def reduction(params: HeadParameters, joint: str) -> float:
-    drive = params.drive(joint)
-    ratio = params.purchased(drive.text("gearhead")).num("ratio", positive=True)
-    if joint in BELTED:
-        pulleys = params.geometry("pulleys", BELTED[joint])
-        ratio *= pulleys.num("joint_teeth", positive=True) / pulleys.num("motor_teeth", positive=True)
-    return ratio
 
 
 def config(params: HeadParameters) -> dict:
     joints = []
+    limits = drive_limits.limits(params)
     for name in CHAIN_JOINTS:
         drive, j = params.drive(name), params.joints[name]
         lines = params.purchased(drive.text("encoder")).num("lines", positive=True)
@@ -31,6 +22,12 @@ def config(params: HeadParameters) -> dict:
                  "gearhead": drive.text("gearhead"), "reduction": round(ratio, 6),
                  "motor_encoder_lines": int(lines),
                  "motor_counts_per_joint_degree": round(4 * lines * ratio / 360.0, 6)}
+        lim = limits[name]
+        entry["drive_limits"] = {"effort_Nm": round(lim.effort, 6), "limited_by": lim.limited_by,
+                                 "velocity_rad_s": round(lim.velocity, 6),
+                                 "velocity_deg_s": round(lim.velocity_deg_s, 6)}
+        if lim.belt_pull:
+            entry["drive_limits"]["belt_pull_N"] = round(lim.belt_pull, 6)
         if drive.has("joint_encoder"):
             bits = int(params.purchased(drive.text("joint_encoder")).num("bits", positive=True))
             entry["joint_encoder"] = {"part": drive.text("joint_encoder"), "bits": bits,

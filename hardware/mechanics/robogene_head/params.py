@@ -63,7 +63,8 @@ class Node:
     def keys(self) -> list[str]:
         return list(self._data.keys())
 
-    def num(self, key: str, *, positive: bool = False, minimum: float | None = None) -> float:
+    def num(self, key: str, *, positive: bool = False, minimum: float | None = None,
+            maximum: float | None = None) -> float:
         value = self.raw(key)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise self._fail(key, f"expected a number, got {value!r}")
@@ -71,6 +72,8 @@ class Node:
             raise self._fail(key, f"must be > 0, got {value!r}")
         if minimum is not None and value < minimum:
             raise self._fail(key, f"must be >= {minimum}, got {value!r}")
+        if maximum is not None and value > maximum:
+            raise self._fail(key, f"must be <= {maximum:g}, got {value!r}")
         return float(value)
 
     def text(self, key: str) -> str:
@@ -87,6 +90,14 @@ class Node:
             if isinstance(item, bool) or not isinstance(item, (int, float)) or not math.isfinite(item):
                 raise self._fail(f"{key}[{i}]", f"expected a number, got {item!r}")
         return tuple(float(v) for v in value)
+
+    def points(self, key: str) -> list[tuple[float, float]]:
+        """A non-empty list of [x, y] points (hole positions and the like)."""
+        value = self.raw(key)
+        if not isinstance(value, list) or not value:
+            raise self._fail(key, f"expected a list of [x, y] points, got {value!r}")
+        items = Node({f"{key}[{i}]": item for i, item in enumerate(value)}, self._path, self._source)
+        return [items.vec(f"{key}[{i}]", 2) for i in range(len(value))]
 
     def __getitem__(self, key: str) -> Any:
         return self.raw(key)

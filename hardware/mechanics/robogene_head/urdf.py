@@ -3,19 +3,16 @@
 """URDF of the head, generated from the parameter file and the CAD's mass properties.
 
 Lengths in metres, angles in radians; the link meshes are the CAD's parts merged per link, in the link
-frame, written in millimetres and scaled by 0.001."""
+frame, written in millimetres and scaled by 0.001. The joints' effort and velocity limits are what their drives
+deliver at the joint (drive_limits: continuous torque, and speed at the motor's no-load speed)."""
 from __future__ import annotations
 
 import math
 from xml.etree import ElementTree as ET
 
-from . import kinematics
+from . import drive_limits, kinematics
 from .massprops import MassProps
 from .params import CHAIN_JOINTS, HeadParameters
-
-# Joint efforts (N*m) and speeds (rad/s) for the URDF limits: continuous torque of the drive at the joint.
-EFFORT = {"neck_pitch": 6.0, "neck_roll": 4.0, "neck_yaw": 4.0, "eyes_tilt": 0.8, "left_eye_pan": 0.3, "right_eye_pan": 0.3}
-VELOCITY = {"neck_pitch": 3.0, "neck_roll": 3.0, "neck_yaw": 3.0, "eyes_tilt": 6.0, "left_eye_pan": 8.0, "right_eye_pan": 8.0}
 
 
 def _fmt(v: float) -> str:
@@ -45,6 +42,7 @@ def generate(params: HeadParameters, props: dict[str, MassProps], mesh_dir: str 
             ET.SubElement(node, "origin", xyz="0 0 0", rpy="0 0 0")
             geometry = ET.SubElement(node, "geometry")
             ET.SubElement(geometry, "mesh", filename=f"{mesh_dir}/{link}.stl", scale="0.001 0.001 0.001")
+    limits = drive_limits.limits(params)
     for name in CHAIN_JOINTS:
         j = params.joints[name]
         el = ET.SubElement(robot, "joint", name=name, type="revolute")
@@ -53,6 +51,6 @@ def generate(params: HeadParameters, props: dict[str, MassProps], mesh_dir: str 
         ET.SubElement(el, "origin", xyz=_vec(j.origin, 1e-3), rpy="0 0 0")
         ET.SubElement(el, "axis", xyz=_vec(j.axis))
         ET.SubElement(el, "limit", lower=_fmt(math.radians(j.lower)), upper=_fmt(math.radians(j.upper)),
-                      effort=_fmt(EFFORT[name]), velocity=_fmt(VELOCITY[name]))
+                      effort=_fmt(limits[name].effort), velocity=_fmt(limits[name].velocity))
     ET.indent(robot)
     return '<?xml version="1.0"?>\n' + ET.tostring(robot, encoding="unicode") + "\n"

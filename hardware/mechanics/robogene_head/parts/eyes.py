@@ -53,12 +53,13 @@ def build(params: HeadParameters) -> list[Part]:
     tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
     hw = head.node("floor").num("half_width")
     pw = params.geometry("pulleys").num("width")
+    pulley_gap = mounts.plate_gap(params)
 
     frame = geom.union(
         geom.box(-al_ / 2 - 4, al_ / 2 + 4, -arm_out, arm_out, z_top - pt, z_top),      # plate under the eyes
         geom.box(-al_ / 2, al_ / 2, arm_in, arm_out, z_top - pt, ah),                  # arms up to the tilt axis
         geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
-        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + 1 + pw),            # tilt shafts
+        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + pulley_gap + pw),   # tilt shafts
         geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
     )
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
@@ -66,13 +67,14 @@ def build(params: HeadParameters) -> list[Part]:
     flanges = {s: loc(0, s * half, z_top, rx=180) for s in (1, -1)}
     frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
                               for s in (1, -1)],
-                     *[t.moved(f) for f in flanges.values() for t in gearhead_screws.holes(pan_gear.num("diameter"), pt)])
+                     *[t.moved(f) for f in flanges.values()
+                       for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)])
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
-                  material="aluminium-6082", color=ALUMINIUM, note="Pan gearheads: " + gearhead_screws.NOTE)]
+                  material="aluminium-6082", color=ALUMINIUM, note="Pan gearheads: " + gearhead_screws.note(params))]
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
-                      mounts.pulley(params, teeth, bore), loc(0, hw + 1, 0, rx=-90),
+                      mounts.pulley(params, teeth, bore), loc(0, hw + pulley_gap, 0, rx=-90),
                       material="aluminium-6082", color=ALUMINIUM, note=mounts.pulley_note(params, teeth, bore)))
     cup = eye_cup(params)
     cam_key = params.root.node("cameras").text("model")

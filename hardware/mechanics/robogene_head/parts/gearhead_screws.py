@@ -4,60 +4,84 @@
 
 Work in a flange frame: the plate lies in z 0..thickness with the gearhead's axis at the origin and its flange on
 z = thickness. The screws come from z = 0 with their heads sunk in ISO 4762 counterbores, because that side faces
-a bearing, a pulley or an eye cup; each one reaches ENGAGEMENT into the gearhead's thread. A plate too thin for
-counterbores (the yaw mount) has its screw heads under it, in pockets of what it stands on."""
+a bearing, a pulley or an eye cup; each one reaches geometry.gearhead_flange.engagement into the gearhead's
+thread. A plate too thin for counterbores (the yaw mount) has its screw heads under it, in pockets of what it
+stands on."""
 from __future__ import annotations
 
 import cadquery as cq
 
 from .. import geom
-from ..params import HeadParameters, ParameterError
+from ..params import HeadParameters, Node, ParameterError
 from . import purchased
 from .base import Part, loc
 
-CLEARANCE = 2.2            # M2, ISO 273 fine: the screws also centre the gearhead
-COUNTERBORE = (4.4, 2.2)   # diameter, depth for an ISO 4762 M2 head (3.8 x 2)
-ENGAGEMENT = 4.2
-NOTE = "4 x 2.2 on the gearhead's bolt circle, counterbored 4.4 x 2.2 deep on the side away from the gearhead"
+
+def flange(params: HeadParameters) -> Node:
+    return params.geometry("gearhead_flange")
 
 
-def holes(gearhead_diameter: float, thickness: float, counterbores: bool = True) -> list[cq.Shape]:
+def clearance(params: HeadParameters) -> float:
+    """M2 clearance, ISO 273 fine: the screws also centre the gearhead."""
+    return flange(params).num("clearance", positive=True)
+
+
+def counterbore(params: HeadParameters) -> tuple[float, float]:
+    """Diameter and depth of the counterbore for an ISO 4762 M2 head."""
+    d, depth = flange(params).vec("counterbore", 2)
+    if d <= clearance(params) or depth <= 0:
+        raise ParameterError(f"{params.path}: geometry.gearhead_flange.counterbore: expected a diameter above the "
+                             f"clearance ({clearance(params):g}) and a positive depth, got {[d, depth]}")
+    return d, depth
+
+
+def note(params: HeadParameters) -> str:
+    """What a drawing says about the holes."""
+    d, depth = counterbore(params)
+    return (f"4 x {clearance(params):g} on the gearhead's bolt circle, counterbored {d:g} x {depth:g} deep on the side "
+            f"away from the gearhead")
+
+
+def holes(params: HeadParameters, gearhead_diameter: float, thickness: float, counterbores: bool = True) -> list[cq.Shape]:
     """Cutting tools in the flange frame."""
     out = []
-    for c in purchased.gearhead_bolt_circle(gearhead_diameter):
-        out.append(geom.cyl("z", CLEARANCE, -1, thickness + 1, c))
+    d, depth = counterbore(params)
+    for c in purchased.gearhead_bolt_circle(params, gearhead_diameter):
+        out.append(geom.cyl("z", clearance(params), -1, thickness + 1, c))
         if counterbores:
-            out.append(geom.cyl("z", COUNTERBORE[0], -1, COUNTERBORE[1], c))
+            out.append(geom.cyl("z", d, -1, depth, c))
     return out
 
 
-def screw_key(thickness: float) -> str:
-    """ISO 4762 M2 length that reaches ENGAGEMENT into the gearhead through a counterbored plate this thick."""
-    return f"iso4762-M2x{thickness - COUNTERBORE[1] + ENGAGEMENT:g}"
+def screw_key(params: HeadParameters, thickness: float) -> str:
+    """ISO 4762 M2 length that reaches the engagement into the gearhead through a counterbored plate this thick."""
+    engagement = flange(params).num("engagement", positive=True)
+    return f"iso4762-M2x{thickness - counterbore(params)[1] + engagement:g}"
 
 
 def screws(params: HeadParameters, name: str, link: str, flange_frame: cq.Location, gearhead_diameter: float,
            thickness: float, key: str | None = None, counterbored: bool = True) -> list[Part]:
     """The four screws; key defaults to screw_key(thickness) (counterbored plates)."""
-    key = key or screw_key(thickness)
+    key = key or screw_key(params, thickness)
     if not params.root.node("purchased").has(key):
         raise ParameterError(f"{params.path}: purchased: no {key!r} for the gearhead screws of {name} "
                              f"(plate {thickness:g} mm thick)")
-    seat = COUNTERBORE[1] if counterbored else 0.0
+    seat = counterbore(params)[1] if counterbored else 0.0
     reach = params.purchased(key).num("length") - (thickness - seat)
-    if not 2 <= reach <= purchased.GEARHEAD_THREAD_DEPTH:
+    thread_depth = flange(params).num("thread_depth", positive=True)
+    if not 2 <= reach <= thread_depth:
         raise ParameterError(f"{params.path}: purchased.{key}: reaches {reach:g} mm into {name}'s gearhead threads, "
-                             f"which take 2 to {purchased.GEARHEAD_THREAD_DEPTH:g} mm")
+                             f"which take 2 to {thread_depth:g} mm")
     return [purchased.screw(params, f"{name}_gearhead_screw_{k}", key, link, flange_frame * loc(x, y, seat))
-            for k, (x, y) in enumerate(purchased.gearhead_bolt_circle(gearhead_diameter))]
+            for k, (x, y) in enumerate(purchased.gearhead_bolt_circle(params, gearhead_diameter))]
 
 
-def head_pockets(gearhead_diameter: float, slot: float = 0.0) -> list[cq.Shape]:
+def head_pockets(params: HeadParameters, gearhead_diameter: float, slot: float = 0.0) -> list[cq.Shape]:
     """Pockets for the heads of screws under a plate without counterbores, in the flange frame (z < 0), as slots
     `slot` long along x when the plate slides."""
-    d, depth = COUNTERBORE
+    d, depth = counterbore(params)
     out = []
-    for x, y in purchased.gearhead_bolt_circle(gearhead_diameter):
+    for x, y in purchased.gearhead_bolt_circle(params, gearhead_diameter):
         out += [geom.cyl("z", d, -depth, 1, (x - slot / 2, y)), geom.cyl("z", d, -depth, 1, (x + slot / 2, y))]
         if slot > 0:
             out.append(geom.box(x - slot / 2, x + slot / 2, y - d / 2, y + d / 2, -depth, 1))

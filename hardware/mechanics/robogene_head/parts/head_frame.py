@@ -8,23 +8,11 @@ import math
 import cadquery as cq
 
 from .. import geom
-from ..params import HeadParameters, ParameterError
+from ..params import HeadParameters, Node, ParameterError
 from . import gearhead_screws, head_joins, mounts, neck, purchased
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
-from .mounts import FIXING_CLEARANCE
-
-YAW_FIXINGS = tuple((sx * 10.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1))   # about the yaw motor axis
-YAW_SLOT = 2.0
-YAW_MOUNT_NOTE = "3.4 x 5.4 slots along x: M3 into the floor, slide to tension the belt; 4 x 2.2 on the gearhead's bolt circle"
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
-# Tilt motor clamp: two M3 under the motor, CLAMP_SCREW_DY either side of its middle, CLAMP_SCREW_BELOW under its
-# body, reaching CLAMP_SCREW_ENGAGEMENT into the back plate's tapped holes.
-CLAMP_SCREW = "iso7380-M3x8"
-CLAMP_SCREW_DY = (-4.0, 4.0)
-CLAMP_SCREW_BELOW = 4.5
-CLAMP_SCREW_ENGAGEMENT = 4.0
-CLAMP_COUNTERBORE = 6.5     # for the 5.7 mm button heads
-CLAMP_HALF_WIDTH = 7.5      # along the motor axis; the gearhead and the encoder are 1 mm beyond
+CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
 # The tilt gearhead's flange bears on the left side plate's inner face; its screws come from outside.
 
 
@@ -48,20 +36,25 @@ def build(params: HeadParameters) -> list[Part]:
     yaw_gear = params.purchased(params.drive("neck_yaw").text("gearhead"))
     tilt_gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
     tilt_flange = loc(tmx, hw, tmz, rx=90)   # gearhead_screws' flange frame: z from the plate's outer face inwards
+    yaw_fixings, yaw_slot = mounts.mount_fixings(params, "neck_yaw"), mounts.mount_slot(params, "neck_yaw")
+    yaw_plate = mounts.mount_thickness(params, "neck_yaw")
+    m3 = params.purchased(mounts.FIXING_SCREW).num("diameter")   # tapped holes are drawn at the thread
     floor = geom.cut(geom.box(x0, x1, -hw, hw, -ft, 0),
                      geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
-                     geom.cyl("z", 8, -ft - 1, 1, (ym, 0)), *joins.holes["head_floor"],
-                     *[geom.cyl("z", 3.0, -ft - 1, 1, (ym + fx, fy)) for fx, fy in YAW_FIXINGS],
-                     *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(yaw_gear.num("diameter"), YAW_SLOT)])
+                     *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
+                     *[geom.cyl("z", m3, -ft - 1, 1, (ym + fx, fy)) for fx, fy in yaw_fixings],
+                     *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(params, yaw_gear.num("diameter"),
+                                                                                    yaw_slot)])
     # Left side plate in its design frame; the right plate is its mirror image.
     face_z = h.vec("face_screw_z", 2)
+    tap_depth = head_joins.tap_depth(params)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
                     geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
-                    geom.cyl("y", tilt_gear.num("shaft_diameter") + 2, inner - 1, hw + 1, (tmx, tmz)),
-                    *[t.moved(tilt_flange) for t in gearhead_screws.holes(tilt_gear.num("diameter"), st)],
+                    geom.cyl("y", mounts.hub_hole(params, tilt_gear.num("shaft_diameter")), inner - 1, hw + 1, (tmx, tmz)),
+                    *[t.moved(tilt_flange) for t in gearhead_screws.holes(params, tilt_gear.num("diameter"), st)],
                     # M3 tapped holes for the face plate screws, modelled at the thread's size like every
                     # tapped hole of the head (the drawing's note gives the tap drill)
-                    *[geom.cyl("x", 3.0, sx1 - 8, sx1 + 1, (inner + st / 2, z)) for z in face_z],
+                    *[geom.cyl("x", m3, sx1 - tap_depth, sx1 + 1, (inner + st / 2, z)) for z in face_z],
                     *joins.holes["head_side_plate"])
     side = geom.single_solid(side, "side plate")
     side_right = side.mirror("XZ")
@@ -69,7 +62,7 @@ def build(params: HeadParameters) -> list[Part]:
                                       *tilt_clamp_back_holes(params)), "back plate")
     top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
     top = geom.single_solid(geom.cut(top, *joins.holes["head_top_bar"]), "top bar")
-    notes = head_joins.NOTES
+    notes = head_joins.notes(params)
 
     parts = [
         Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"),
@@ -92,34 +85,52 @@ def build(params: HeadParameters) -> list[Part]:
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
     # Four M3 through slots into the floor: the plate slides along x to tension the belt.
     parts.append(Part("neck_yaw_motor_mount", "motor_mount_neck_yaw", "head_frame", "machined",
-                      mounts.mount_plate((-14, 14, -14, 14), 3, 8, yaw_gear.num("diameter"), YAW_FIXINGS, slot=YAW_SLOT,
-                                         counterbores=False),
-                      loc(ym, 0, 0), note=YAW_MOUNT_NOTE, **al))
-    for i, (fx, fy) in enumerate(YAW_FIXINGS):
+                      mounts.mount_plate(params, "neck_yaw", mounts.mount_outline(params, "neck_yaw"),
+                                         yaw_gear.num("diameter"), counterbores=False),
+                      loc(ym, 0, 0), note=mounts.mount_note(params, "neck_yaw"), **al))
+    for i, (fx, fy) in enumerate(yaw_fixings):
         parts.append(purchased.screw(params, f"yaw_mount_screw_{i}", mounts.FIXING_SCREW, "head_frame",
-                                     loc(ym + fx, fy, 3, rx=180)))
-    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, 3))
-    # The 3 mm plate has no room for counterbores: the screw heads sit under it, in slotted pockets in the floor.
-    parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"), 3,
-                                    key=YAW_GEARHEAD_SCREW, counterbored=False)
-    yaw_teeth = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True))
-    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_gear.num('shaft_diameter'):g}", "head_frame",
-                      "machined", mounts.pulley(params, yaw_teeth, yaw_gear.num("shaft_diameter")),
-                      loc(ym, 0, -neck.yaw_pulley_drop(params)),
-                      note=mounts.pulley_note(params, yaw_teeth, yaw_gear.num("shaft_diameter")), **al))
-    # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside, motor held by a clamp.
+                                     loc(ym + fx, fy, yaw_plate, rx=180)))
+    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, yaw_plate))
+    # The thin plate has no room for counterbores: the screw heads sit under it, in slotted pockets in the floor.
+    parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"),
+                                    yaw_plate, key=YAW_GEARHEAD_SCREW, counterbored=False)
+    # The motor pulleys' hubs reach back along the gearhead shafts, through the floor and the mount plate here.
+    width = params.geometry("pulleys").num("width", positive=True)
+    drop = neck.yaw_pulley_drop(params)
+    yaw_teeth, yaw_bore = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True)), yaw_gear.num("shaft_diameter")
+    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_bore:g}", "head_frame", "machined",
+                      mounts.pulley(params, yaw_teeth, yaw_bore,
+                                    mounts.hub_length(params, drop - width + yaw_plate)),
+                      loc(ym, 0, -drop), note=mounts.pulley_note(params, yaw_teeth, yaw_bore, hub=True), **al))
+    # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside with its hub through the
+    # plate, motor held by a clamp.
     tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))
+    gap = mounts.plate_gap(params)
     parts += purchased.drive_stack(params, "eyes_tilt", "head_frame", loc(tmx, inner, tmz, rx=90))
     parts += gearhead_screws.screws(params, "eyes_tilt", "head_frame", tilt_flange, tilt_gear.num("diameter"), st)
-    tilt_teeth = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True))
-    parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_gear.num('shaft_diameter'):g}",
-                      "head_frame", "machined", mounts.pulley(params, tilt_teeth, tilt_gear.num("shaft_diameter")),
-                      loc(tmx, hw + 1, tmz, rx=-90),
-                      note=mounts.pulley_note(params, tilt_teeth, tilt_gear.num("shaft_diameter")), **al))
+    tilt_teeth, tilt_bore = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True)), tilt_gear.num("shaft_diameter")
+    parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_bore:g}", "head_frame", "machined",
+                      mounts.pulley(params, tilt_teeth, tilt_bore, mounts.hub_length(params, hw + gap - inner)),
+                      loc(tmx, hw + gap + width, tmz, rx=90),   # body y hw+gap..hw+gap+width, hub towards -y
+                      note=mounts.pulley_note(params, tilt_teeth, tilt_bore, hub=True), **al))
     clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
                                             inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
     parts.append(clamp)
     return parts + clamp_screws + belt_parts(params) + joins.screws
+
+
+def _yaw_hub_slot(params: HeadParameters, bore: float, ym: float, z0: float, z1: float) -> list[cq.Shape]:
+    """The floor's passage for the yaw motor pulley's hub: a slot along x, as far as the mount plate slides."""
+    d, slot = mounts.hub_hole(params, bore), mounts.mount_slot(params, "neck_yaw")
+    pilot = params.geometry("motor_mounts").num("pilot_hole", positive=True)
+    if d > pilot:
+        raise ParameterError(f"{params.path}: geometry.motor_mounts.pilot_hole: {pilot:g} is too small for the yaw "
+                             f"motor pulley's hub, which needs {d:g}")
+    tools = [geom.cyl("z", d, z0, z1, (ym - slot / 2, 0))]
+    if slot > 0:
+        tools += [geom.cyl("z", d, z0, z1, (ym + slot / 2, 0)), geom.box(ym - slot / 2, ym + slot / 2, -d / 2, d / 2, z0, z1)]
+    return tools
 
 
 def belt_parts(params: HeadParameters) -> list[Part]:
@@ -138,7 +149,7 @@ def belt_parts(params: HeadParameters) -> list[Part]:
     # 1 mm outside the left side plate; the loop's x axis points from the joint pulley to the motor pulley
     loops = [("neck_yaw", abs(ym), yaw, loc(0, 0, -neck.yaw_pulley_drop(params), rz=0 if ym > 0 else 180)),
              ("eyes_tilt", math.hypot(tmx - tx, tmz - tz), tilt,
-              loc(tx, hw + 1, tz, ry=math.degrees(math.atan2(-(tmz - tz), tmx - tx)), rx=-90))]
+              loc(tx, hw + mounts.plate_gap(params), tz, ry=math.degrees(math.atan2(-(tmz - tz), tmx - tx)), rx=-90))]
     out = []
     for joint, distance, teeth, placement in loops:
         key, belt_teeth = belts[joint]
@@ -149,29 +160,49 @@ def belt_parts(params: HeadParameters) -> list[Part]:
     return out
 
 
+def _clamp(params: HeadParameters) -> Node:
+    return params.geometry("head", "tilt_motor_clamp")
+
+
+def _clamp_screw_dy(params: HeadParameters) -> tuple[float, float]:
+    dy = _clamp(params).num("screw_dy", positive=True)
+    return -dy, dy
+
+
+def _clamp_screw_z(params: HeadParameters) -> float:
+    motor = params.purchased(params.drive("eyes_tilt").text("motor"))
+    tmz = params.geometry("head", "tilt_motor").num("z")
+    return tmz - motor.num("diameter") / 2 - _clamp(params).num("screw_below", positive=True)
+
+
 def _tilt_motor_clamp(params: HeadParameters, inner: float, x_back: float, tmx: float, tmz: float,
                       y_motor: float) -> tuple[Part, list[Part]]:
     """The printed block that holds the tilt motor's body against the back plate's inner face (x_back), and its
     two M3 screws: through a lug under the motor, heads sunk in counterbores from the front, into M3 holes
-    tapped through the back plate."""
+    tapped through the back plate (geometry.head.tilt_motor_clamp)."""
+    c = _clamp(params)
     motor = params.purchased(params.drive("eyes_tilt").text("motor"))
     screw = params.purchased(CLAMP_SCREW)
-    r = motor.num("diameter") / 2
-    z_screw = tmz - r - CLAMP_SCREW_BELOW
+    z_screw = _clamp_screw_z(params)
     bt = params.geometry("head", "back_plate").num("thickness")
-    if CLAMP_SCREW_ENGAGEMENT > bt:
+    engagement, counterbore = c.num("screw_engagement", positive=True), c.num("counterbore", positive=True)
+    half = c.num("half_width", positive=True)
+    if engagement > bt:
         raise ParameterError(f"{params.path}: geometry.head.back_plate.thickness: {bt:g} is less than the "
-                             f"{CLAMP_SCREW_ENGAGEMENT:g} mm the tilt motor clamp's screws reach into it")
-    seat = x_back + screw.num("length") - CLAMP_SCREW_ENGAGEMENT   # the heads bear here, facing +x
-    x_front = tmx + 10
-    block = geom.box(x_back, x_front, y_motor - CLAMP_HALF_WIDTH, y_motor + CLAMP_HALF_WIDTH,
-                     z_screw - CLAMP_COUNTERBORE / 2 - 2, tmz + 12)
-    tools = [geom.cyl("y", motor.num("diameter"), y_motor - CLAMP_HALF_WIDTH - 1, y_motor + CLAMP_HALF_WIDTH + 1,
-                      (tmx, tmz))]
+                             f"{engagement:g} mm the tilt motor clamp's screws reach into it")
+    if counterbore <= screw.num("head_diameter"):
+        raise ParameterError(f"{params.path}: geometry.head.tilt_motor_clamp.counterbore: {counterbore:g} does not "
+                             f"take the {screw.num('head_diameter'):g} mm heads of {CLAMP_SCREW}")
+    seat = x_back + screw.num("length") - engagement   # the heads bear here, facing +x
+    x_front = tmx + c.num("front", positive=True)
+    block = geom.box(x_back, x_front, y_motor - half, y_motor + half,
+                     z_screw - counterbore / 2 - c.num("base", positive=True), tmz + c.num("top", positive=True))
+    tools = [geom.cyl("y", motor.num("diameter"), y_motor - half - 1, y_motor + half + 1, (tmx, tmz))]
     screws = []
-    for i, dy in enumerate(CLAMP_SCREW_DY):
-        tools += [geom.cyl("x", FIXING_CLEARANCE, x_back - 1, x_front + 1, (y_motor + dy, z_screw)),
-                  geom.cyl("x", CLAMP_COUNTERBORE, seat, x_front + 1, (y_motor + dy, z_screw))]
+    clearance = mounts.clearance_hole(params, CLAMP_SCREW)
+    for i, dy in enumerate(_clamp_screw_dy(params)):
+        tools += [geom.cyl("x", clearance, x_back - 1, x_front + 1, (y_motor + dy, z_screw)),
+                  geom.cyl("x", counterbore, seat, x_front + 1, (y_motor + dy, z_screw))]
         screws.append(purchased.screw(params, f"tilt_clamp_screw_{i}", CLAMP_SCREW, "head_frame",
                                       loc(seat, y_motor + dy, z_screw, ry=-90)))
     clamp = Part("eyes_tilt_motor_clamp", "eyes_tilt_motor_clamp", "head_frame", "printed",
@@ -184,11 +215,10 @@ def tilt_clamp_back_holes(params: HeadParameters) -> list[cq.Shape]:
     """The clamp screws' tapped holes through the back plate (head frame), drawn at the thread."""
     h = params.geometry("head")
     x0, bt = h.node("floor").num("x_min"), h.node("back_plate").num("thickness")
-    tm = h.node("tilt_motor")
     motor = params.purchased(params.drive("eyes_tilt").text("motor"))
     gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
     inner = h.node("floor").num("half_width") - h.node("side_plate").num("thickness")
     y_motor = inner - gear.num("length") - motor.num("length") / 2
-    z_screw = tm.num("z") - motor.num("diameter") / 2 - CLAMP_SCREW_BELOW
+    z_screw = _clamp_screw_z(params)
     d = params.purchased(CLAMP_SCREW).num("diameter")
-    return [geom.cyl("x", d, x0 - 1, x0 + bt + 1, (y_motor + dy, z_screw)) for dy in CLAMP_SCREW_DY]
+    return [geom.cyl("x", d, x0 - 1, x0 + bt + 1, (y_motor + dy, z_screw)) for dy in _clamp_screw_dy(params)]

@@ -8,45 +8,125 @@ import math
 import cadquery as cq
 
 from .. import geom
-from ..params import HeadParameters, ParameterError
+from ..params import HeadParameters, Node, ParameterError
 from . import gearhead_screws
 
-FIXING_CLEARANCE = 3.4   # M3, ISO 273 medium
-FIXING_SCREW = "iso7380-M3x8"
-PULLEY_FLANGE = 0.6          # thickness of each pulley flange
-PITCH_DIFFERENTIAL = 0.508   # MXL: pitch diameter less outside diameter
+FIXING_SCREW = "iso7380-M3x8"   # what holds a mount plate on the structure
 
 
-def mount_plate(outline: tuple[float, float, float, float], thickness: float, hole: float, gearhead_diameter: float,
-                fixings: tuple[tuple[float, float], ...] = (), slot: float = 0.0, counterbores: bool = True) -> cq.Shape:
-    """Flange plate in z 0..thickness with its axis at the origin, outline (x0, x1, y0, y1); the gearhead's flange
-    bears on z = thickness. A pilot hole for the output shaft, the gearhead's four M2 screw holes (counterbored
-    from z = 0 unless counterbores is False: gearhead_screws), and M3 clearance holes at `fixings` for the screws
-    that hold the plate on the structure, drawn as slots `slot` long along x where the plate must slide."""
+def clearance_hole(params: HeadParameters, screw: str) -> float:
+    """Clearance hole for a screw through a part (geometry.clearance_holes, by thread: M2, M3...)."""
+    thread = f"M{params.purchased(screw).num('diameter', positive=True):g}"
+    hole = params.geometry("clearance_holes").num(thread, positive=True)
+    if hole <= params.purchased(screw).num("diameter"):
+        raise ParameterError(f"{params.path}: geometry.clearance_holes.{thread}: {hole:g} does not clear an {thread}")
+    return hole
+
+
+def mount(params: HeadParameters, joint: str) -> Node:
+    return params.geometry("motor_mounts", joint)
+
+
+def mount_thickness(params: HeadParameters, joint: str) -> float:
+    return mount(params, joint).num("thickness", positive=True)
+
+
+def mount_fixings(params: HeadParameters, joint: str) -> list[tuple[float, float]]:
+    return mount(params, joint).points("fixings")
+
+
+def mount_slot(params: HeadParameters, joint: str) -> float:
+    """How far the plate slides along x on its fixings (0: it does not)."""
+    node = mount(params, joint)
+    return node.num("slot", minimum=0) if node.has("slot") else 0.0
+
+
+def mount_outline(params: HeadParameters, joint: str) -> tuple[float, float, float, float]:
+    x0, x1, y0, y1 = mount(params, joint).vec("outline", 4)
+    if not (x0 < 0 < x1 and y0 < 0 < y1):
+        raise ParameterError(f"{params.path}: geometry.motor_mounts.{joint}.outline: expected x0 < 0 < x1 and "
+                             f"y0 < 0 < y1 about the gearhead axis, got {[x0, x1, y0, y1]}")
+    return x0, x1, y0, y1
+
+
+def mount_plate(params: HeadParameters, joint: str, outline: tuple[float, float, float, float],
+                gearhead_diameter: float, counterbores: bool = True) -> cq.Shape:
+    """Flange plate of geometry.motor_mounts.<joint> in z 0..thickness with its axis at the origin, outline (x0, x1,
+    y0, y1); the gearhead's flange bears on z = thickness. A pilot hole for the output shaft, the gearhead's four
+    M2 screw holes (counterbored from z = 0 unless counterbores is False: gearhead_screws), and M3 clearance holes
+    at its fixings for the screws that hold the plate on the structure, drawn as slots along x where it slides."""
+    thickness, fixings, slot = mount_thickness(params, joint), mount_fixings(params, joint), mount_slot(params, joint)
+    hole = params.geometry("motor_mounts").num("pilot_hole", positive=True)
+    clearance = clearance_hole(params, FIXING_SCREW)
     x0, x1, y0, y1 = outline
     plate = geom.box(x0, x1, y0, y1, 0, thickness)
-    holes = [geom.cyl("z", hole, -1, thickness + 1), *gearhead_screws.holes(gearhead_diameter, thickness, counterbores)]
+    holes = [geom.cyl("z", hole, -1, thickness + 1),
+             *gearhead_screws.holes(params, gearhead_diameter, thickness, counterbores)]
     for x, y in fixings:
-        holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x - slot / 2, y)))
+        holes.append(geom.cyl("z", clearance, -1, thickness + 1, (x - slot / 2, y)))
         if slot > 0:
-            holes.append(geom.cyl("z", FIXING_CLEARANCE, -1, thickness + 1, (x + slot / 2, y)))
-            holes.append(geom.box(x - slot / 2, x + slot / 2, y - FIXING_CLEARANCE / 2, y + FIXING_CLEARANCE / 2,
+            holes.append(geom.cyl("z", clearance, -1, thickness + 1, (x + slot / 2, y)))
+            holes.append(geom.box(x - slot / 2, x + slot / 2, y - clearance / 2, y + clearance / 2,
                                   -1, thickness + 1))
-    return geom.single_solid(geom.cut(plate, *holes), "mount_plate")
+    return geom.single_solid(geom.cut(plate, *holes), f"motor_mount_{joint}")
+
+
+def mount_note(params: HeadParameters, joint: str) -> str:
+    """What the plate's drawing says about its holes."""
+    clearance, slot = clearance_hole(params, FIXING_SCREW), mount_slot(params, joint)
+    if slot > 0:
+        return (f"{clearance:g} x {clearance + slot:g} slots along x: M3 into the floor, slide to tension the belt; "
+                f"4 x {gearhead_screws.clearance(params):g} on the gearhead's bolt circle")
+    return f"{clearance:g} holes: M3 fixing screws. " + gearhead_screws.note(params)
+
+
+def pitch_differential(params: HeadParameters) -> float:
+    """MXL: pitch diameter less the teeth's outside diameter."""
+    return params.geometry("pulleys").num("pitch_differential", positive=True)
+
+
+def flange_thickness(params: HeadParameters) -> float:
+    return params.geometry("pulleys", "flange").num("thickness", positive=True)
+
+
+def plate_gap(params: HeadParameters) -> float:
+    """The pulleys' distance from the floor's underside and the left side plate's outer face."""
+    return params.geometry("pulleys").num("plate_gap", positive=True)
 
 
 def pitch_diameter(params: HeadParameters, teeth: int) -> float:
     return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / math.pi
 
 
-def pulley(params: HeadParameters, teeth: int, bore: float) -> cq.Shape:
-    """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges."""
+def pulley(params: HeadParameters, teeth: int, bore: float, hub_length: float = 0.0) -> cq.Shape:
+    """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges. A motor pulley
+    has a hub hub_length long from z = width, around the bore, so that it sits on most of its gearhead's shaft."""
     width = params.geometry("pulleys").num("width", positive=True)
-    outside = pitch_diameter(params, teeth) - PITCH_DIFFERENTIAL
-    flange, f = outside + 3.0, PULLEY_FLANGE
+    outside = pitch_diameter(params, teeth) - pitch_differential(params)
+    flange, f = outside + 2 * params.geometry("pulleys", "flange").num("rim", positive=True), flange_thickness(params)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
-    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + 1)), f"pulley_{teeth}T")
+    if hub_length > 0:
+        body = geom.union(body, geom.cyl("z", hub_diameter(params, bore), width, width + hub_length))
+    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + hub_length + 1)), f"pulley_{teeth}T")
+
+
+def hub_diameter(params: HeadParameters, bore: float) -> float:
+    return bore + 2 * params.geometry("pulleys", "hub").num("wall", positive=True)
+
+
+def hub_hole(params: HeadParameters, bore: float) -> float:
+    """Diameter of a hole a motor pulley's hub passes through."""
+    return hub_diameter(params, bore) + 2 * params.geometry("pulleys", "hub").num("clearance", positive=True)
+
+
+def hub_length(params: HeadParameters, from_pulley_to_flange: float) -> float:
+    """Hub length for a pulley whose body ends this far from its gearhead's flange face: up to the hub gap."""
+    gap = params.geometry("pulleys", "hub").num("gap", positive=True)
+    if from_pulley_to_flange <= gap:
+        raise ParameterError(f"{params.path}: geometry.pulleys.hub.gap: {gap:g} leaves no hub: the pulley ends "
+                             f"{from_pulley_to_flange:g} mm from its gearhead's flange")
+    return from_pulley_to_flange - gap
 
 
 def belt_teeth(params: HeadParameters, centre_distance: float, teeth_a: int, teeth_b: int) -> int:
@@ -84,11 +164,12 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     back = belt.num("thickness", positive=True) - belt.num("tooth_height", positive=True)
     if back <= 0:
         raise ParameterError(f"{params.path}: purchased.{key}: thickness must exceed tooth_height (the belt's back)")
-    if belt_width > width - 2 * PULLEY_FLANGE:
+    between = width - 2 * flange_thickness(params)
+    if belt_width > between:
         raise ParameterError(f"{params.path}: purchased.{key}: a {belt_width:g} mm wide belt does not run between "
-                             f"the flanges of {width:g} mm pulleys ({width - 2 * PULLEY_FLANGE:g} mm apart)")
-    ra = (pitch_diameter(params, teeth_a) - PITCH_DIFFERENTIAL) / 2
-    rb = (pitch_diameter(params, teeth_b) - PITCH_DIFFERENTIAL) / 2
+                             f"the flanges of {width:g} mm pulleys ({between:g} mm apart)")
+    ra = (pitch_diameter(params, teeth_a) - pitch_differential(params)) / 2
+    rb = (pitch_diameter(params, teeth_b) - pitch_differential(params)) / 2
     z0, z1 = (width - belt_width) / 2, (width + belt_width) / 2
 
     def hull(extra: float, lo: float, hi: float) -> cq.Shape:
@@ -103,7 +184,9 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
-def pulley_note(params: HeadParameters, teeth: int, bore: float) -> str:
-    """What the drawing of a pulley must say: its teeth are not modelled."""
-    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7; "
+def pulley_note(params: HeadParameters, teeth: int, bore: float, hub: bool = False) -> str:
+    """What the drawing of a pulley must say: its teeth are not modelled; a hub too thin for a set screw is
+    bonded to the shaft (kept short: the note is one line on the sheet)."""
+    fixing = ", hub bonded to the shaft" if hub else ""
+    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7{fixing}; "
             f"teeth not drawn: MXL profile")

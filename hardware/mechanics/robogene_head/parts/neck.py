@@ -13,14 +13,6 @@ STANDOFF = "standoff-M3x46-FF"
 UPRIGHT_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer face "
                 "for the pitch motor mount (unused on the right upright)")
 PITCH_STAGE_NOTE = "Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount"
-MOUNT_NOTE = "3.4 holes: M3 fixing screws. " + gearhead_screws.NOTE
-# Pitch motor mount on the left upright's outer face: plate outline and its four M3 fixings, in the plate's frame
-# (x along the head's x, y down the upright).
-PITCH_MOUNT = (-20.0, 20.0, -18.0, 18.0)
-PITCH_FIXINGS = tuple((sx * 16.0, sy * 10.0) for sx in (-1, 1) for sy in (-1, 1))
-# Roll motor mount on the rear lug: the lug is a bearing ring above, so the plate reaches down past the bearing
-# and its two M3 fixings go into the lug below it (plate x runs up the lug).
-ROLL_FIXINGS = ((-14.5, -6.0), (-14.5, 6.0))
 
 
 def _base(params: HeadParameters) -> list[Part]:
@@ -32,6 +24,15 @@ def _base(params: HeadParameters) -> list[Part]:
     ut, ul, gap = up.num("thickness", positive=True), up.num("length", positive=True), up.num("gap", positive=True)
     hp = params.joints["neck_pitch"].origin[2]
     corners = [(sx * (L / 2 - inset), sy * (W / 2 - inset)) for sx in (-1, 1) for sy in (-1, 1)]
+    m3 = mounts.clearance_hole(params, SCREW)
+    cable = g.node("cable_pass")
+    c0, c1 = cable.vec("from_edge", 2)
+    if not 0 <= c0 < c1 <= L:
+        raise ParameterError(f"{params.path}: geometry.neck_base.cable_pass.from_edge: expected 0 <= from < to "
+                             f"<= the plate's length, got {[c0, c1]}")
+    cw = cable.num("width", positive=True)
+    mh = fl.node("mount_holes")
+    mx, my = mh.vec("at", 2)
     if params.purchased(STANDOFF).num("length") != bay:
         raise ParameterError(f"{params.path}: geometry.neck_base.bay_height: {bay} differs from the length of the "
                              f"standoffs ({STANDOFF}: {params.purchased(STANDOFF).num('length')})")
@@ -39,11 +40,12 @@ def _base(params: HeadParameters) -> list[Part]:
     upright_screws = [(sx * ul / 4, sy * y_up) for sx in (-1, 1) for sy in (-1, 1)]
 
     plate = geom.cut(geom.box(-L / 2, L / 2, -W / 2, W / 2, -T, 0),
-                     *[geom.cyl("z", 3.4, -T - 1, 1, c) for c in corners + upright_screws],
-                     geom.box(-L / 2 + 20, -L / 2 + 40, -12, 12, -T - 1, 1))  # board cable pass-through
+                     *[geom.cyl("z", m3, -T - 1, 1, c) for c in corners + upright_screws],
+                     geom.box(-L / 2 + c0, -L / 2 + c1, -cw / 2, cw / 2, -T - 1, 1))  # board cable pass-through
     flange = geom.cut(geom.box(-fl.num("length") / 2, fl.num("length") / 2, -fl.num("width") / 2, fl.num("width") / 2, 0, ft),
-                      *[geom.cyl("z", 3.4, -1, ft + 1, c) for c in corners],
-                      *[geom.cyl("z", 6.5, -1, ft + 1, (sx * 40, sy * 40)) for sx in (-1, 1) for sy in (-1, 1)],
+                      *[geom.cyl("z", m3, -1, ft + 1, c) for c in corners],
+                      *[geom.cyl("z", mh.num("diameter", positive=True), -1, ft + 1, (sx * mx, sy * my))
+                        for sx in (-1, 1) for sy in (-1, 1)],
                       *board_stack.flange_holes(params, ft))
     z_flange = -T - bay - ft
 
@@ -56,7 +58,8 @@ def _base(params: HeadParameters) -> list[Part]:
                        geom.cyl("y", 8, gap / 2 - 1, y_face + 1, (0, hp)),
                        geom.cyl("y", bo, y_face - bw, y_face + 1, (0, hp)),
                        *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)],
-                       *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy)) for fx, fy in PITCH_FIXINGS])
+                       *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
+                         for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
     upright = geom.single_solid(upright, "neck_upright")
 
     parts = [
@@ -82,14 +85,16 @@ def _base(params: HeadParameters) -> list[Part]:
     parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"), "neck_base",
                                    loc(0, -y_out + bw, hp, rx=90)))
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
-    mount = mounts.mount_plate(PITCH_MOUNT, 4, 8, gear.num("diameter"), PITCH_FIXINGS)
+    pt = mounts.mount_thickness(params, "neck_pitch")
+    mount = mounts.mount_plate(params, "neck_pitch", mounts.mount_outline(params, "neck_pitch"), gear.num("diameter"))
     parts.append(Part("neck_pitch_motor_mount", "motor_mount_neck_pitch", "neck_base", "machined", mount,
-                      loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
-    parts += gearhead_screws.screws(params, "neck_pitch", "neck_base", loc(0, y_out, hp, rx=-90), gear.num("diameter"), 4)
-    for i, (fx, fy) in enumerate(PITCH_FIXINGS):   # heads on the plate, shanks into the upright (-y)
+                      loc(0, y_out, hp, rx=-90), material="aluminium-6082", color=ALUMINIUM,
+                      note=mounts.mount_note(params, "neck_pitch")))
+    parts += gearhead_screws.screws(params, "neck_pitch", "neck_base", loc(0, y_out, hp, rx=-90), gear.num("diameter"), pt)
+    for i, (fx, fy) in enumerate(mounts.mount_fixings(params, "neck_pitch")):   # heads on the plate, shanks into the upright (-y)
         parts.append(purchased.screw(params, f"pitch_mount_screw_{i}", mounts.FIXING_SCREW, "neck_base",
-                                     loc(fx, y_out + 4, hp - fy, rx=90)))
-    parts += purchased.drive_stack(params, "neck_pitch", "neck_base", loc(0, y_out + 4, hp, rx=-90))
+                                     loc(fx, y_out + pt, hp - fy, rx=90)))
+    parts += purchased.drive_stack(params, "neck_pitch", "neck_base", loc(0, y_out + pt, hp, rx=-90))
     parts.append(purchased.joint_encoder(params, "neck_pitch_joint_encoder", "neck_base", loc(0, -y_out - 1, hp, rx=90)))
     return parts
 
@@ -105,20 +110,23 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     zr = params.joints["neck_roll"].origin[2]
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
     bearing = params.purchased(params.drive("neck_roll").text("bearing"))
+    pitch_bore = params.purchased(params.drive("neck_pitch").text("bearing")).num("bore", positive=True)
+    pitch_plate = mounts.mount_thickness(params, "neck_pitch")   # the gearhead's flange, so its shaft's reach
+    roll_fixings = mounts.mount_fixings(params, "neck_roll")
     x_out = span / 2 + lt
     stage = geom.union(
         geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
         geom.box(-x_out, x_out, -lw / 2, lw / 2, bh / 2 - 4, bh / 2),
         geom.box(span / 2, x_out, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
         geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
-        geom.cyl("y", 6, bw / 2 - 1, y_out),          # pitch shafts, integral with the stage
-        geom.cyl("y", 6, -y_out, -bw / 2 + 1),
+        geom.cyl("y", pitch_bore, bw / 2 - 1, y_out),          # pitch shafts, integral with the stage
+        geom.cyl("y", pitch_bore, -y_out, -bw / 2 + 1),
     )
     stage = geom.cut(stage,
-                     geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + 4, y_out + 1),
+                     geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + pitch_plate, y_out + 1),
                      geom.cyl("x", bearing.num("outside"), span / 2 - 1, x_out + 1, (0, zr)),
                      geom.cyl("x", bearing.num("outside"), -x_out - 1, -span / 2 + 1, (0, zr)),
-                     *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in ROLL_FIXINGS])
+                     *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings])
     parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
                   material="aluminium-6082", color=ALUMINIUM, note=PITCH_STAGE_NOTE)]
     key = params.drive("neck_roll").text("bearing")
@@ -126,19 +134,20 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     parts.append(purchased.bearing(params, "neck_roll_bearing_rear", key, "neck_pitch_link", loc(-span / 2, 0, zr, ry=-90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     rd = roll_gear.num("diameter")
-    bottom = min(fx for fx, _ in ROLL_FIXINGS) - 4.5
+    rt = mounts.mount_thickness(params, "neck_roll")
+    bottom = min(fx for fx, _ in roll_fixings) - mounts.mount(params, "neck_roll").num("margin", positive=True)
     if zr + bottom < bh / 2 - 4:
         raise ParameterError(f"{params.path}: joints.neck_roll.origin[2]: {zr} leaves the roll motor mount's screws "
                              f"below the rear lug")
     parts.append(Part("neck_roll_motor_mount", "motor_mount_neck_roll", "neck_pitch_link", "machined",
-                      mounts.mount_plate((bottom, rd / 2, -lw / 2, lw / 2), 4, 8, rd, ROLL_FIXINGS),
+                      mounts.mount_plate(params, "neck_roll", (bottom, rd / 2, -lw / 2, lw / 2), rd),
                       loc(-x_out, 0, zr, ry=-90),
-                      material="aluminium-6082", color=ALUMINIUM, note=MOUNT_NOTE))
-    parts += gearhead_screws.screws(params, "neck_roll", "neck_pitch_link", loc(-x_out, 0, zr, ry=-90), rd, 4)
-    for i, (fx, fy) in enumerate(ROLL_FIXINGS):   # heads on the plate, shanks into the lug (+x)
+                      material="aluminium-6082", color=ALUMINIUM, note=mounts.mount_note(params, "neck_roll")))
+    parts += gearhead_screws.screws(params, "neck_roll", "neck_pitch_link", loc(-x_out, 0, zr, ry=-90), rd, rt)
+    for i, (fx, fy) in enumerate(roll_fixings):   # heads on the plate, shanks into the lug (+x)
         parts.append(purchased.screw(params, f"roll_mount_screw_{i}", mounts.FIXING_SCREW, "neck_pitch_link",
-                                     loc(-x_out - 4, fy, zr + fx, ry=90)))
-    parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - 4, 0, zr, ry=-90))
+                                     loc(-x_out - rt, fy, zr + fx, ry=90)))
+    parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - rt, 0, zr, ry=-90))
     parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(x_out + 1, 0, zr, ry=90)))
     return parts
 
@@ -153,10 +162,13 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
     shaft = yaw_bearing.num("bore")
+    roll_bore = params.purchased(params.drive("neck_roll").text("bearing")).num("bore", positive=True)
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
-                       geom.cyl("x", 6, bl / 2 - 1, x_out), geom.cyl("x", 6, -x_out, -bl / 2 + 1),
+                       geom.cyl("x", roll_bore, bl / 2 - 1, x_out), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
-    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, -x_out + gear.num("shaft_length") - 4))
+    roll_plate = mounts.mount_thickness(params, "neck_roll")   # the gearhead's flange, so its shaft's reach
+    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,
+                                      -x_out + gear.num("shaft_length") - roll_plate))
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
@@ -168,8 +180,9 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
 
 
 def yaw_pulley_drop(params: HeadParameters) -> float:
-    """Depth of the yaw pulleys' lower face below the yaw joint frame: 1 mm under the head floor."""
-    return params.geometry("head", "floor").num("thickness") + 1 + params.geometry("pulleys").num("width", positive=True)
+    """Depth of the yaw pulleys' lower face below the yaw joint frame: pulleys.plate_gap under the head floor."""
+    return (params.geometry("head", "floor").num("thickness") + mounts.plate_gap(params)
+            + params.geometry("pulleys").num("width", positive=True))
 
 
 def build(params: HeadParameters) -> list[Part]:

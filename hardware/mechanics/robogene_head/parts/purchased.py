@@ -19,23 +19,21 @@ def _purchased(params: HeadParameters, name: str, key: str, link: str, shape: cq
     return Part(name, key, link, "purchased", shape, placement, mass=params.purchased(key).num("mass"), color=color)
 
 
-# The flange's mounting threads as this design assumes them (check the datasheet of the gearhead you buy):
-# four M2, GEARHEAD_THREAD_DEPTH deep, on a bolt circle of 70 % of the gearhead's diameter, at 45 deg + k * 90 deg.
-GEARHEAD_THREAD = 2.0
-GEARHEAD_THREAD_DEPTH = 5.0
-
-
-def gearhead_bolt_circle(diameter: float) -> list[tuple[float, float]]:
-    r = 0.35 * diameter
+def gearhead_bolt_circle(params: HeadParameters, diameter: float) -> list[tuple[float, float]]:
+    """The flange's four mounting threads as this design assumes them (geometry.gearhead_flange): on a bolt circle
+    of bolt_circle_ratio x the gearhead's diameter, at 45 deg + k * 90 deg."""
+    ratio = params.geometry("gearhead_flange").num("bolt_circle_ratio", positive=True, maximum=1.0)
+    r = ratio / 2 * diameter
     return [(r * math.cos(math.radians(45 + 90 * k)), r * math.sin(math.radians(45 + 90 * k))) for k in range(4)]
 
 
-def gearhead_shape(p) -> cq.Shape:
+def gearhead_shape(params: HeadParameters, p) -> cq.Shape:
     """Body z 0..length with the flange's tapped holes, output shaft z -shaft_length..0 (the flange face is z = 0)."""
+    f = params.geometry("gearhead_flange")
     body = geom.union(geom.cyl("z", p.num("diameter"), 0, p.num("length")),
                       geom.cyl("z", p.num("shaft_diameter"), -p.num("shaft_length"), 0))
-    return geom.cut(body, *[geom.cyl("z", GEARHEAD_THREAD, -1, GEARHEAD_THREAD_DEPTH, c)
-                            for c in gearhead_bolt_circle(p.num("diameter"))])
+    return geom.cut(body, *[geom.cyl("z", f.num("thread", positive=True), -1, f.num("thread_depth", positive=True), c)
+                            for c in gearhead_bolt_circle(params, p.num("diameter"))])
 
 
 def drive_stack(params: HeadParameters, joint: str, link: str, placement: cq.Location) -> list[Part]:
@@ -46,7 +44,8 @@ def drive_stack(params: HeadParameters, joint: str, link: str, placement: cq.Loc
     z_motor = gear.num("length")
     z_enc = z_motor + motor.num("length")
     return [
-        _purchased(params, f"{joint}_gearhead", drive.text("gearhead"), link, gearhead_shape(gear), placement, DARK),
+        _purchased(params, f"{joint}_gearhead", drive.text("gearhead"), link, gearhead_shape(params, gear),
+                   placement, DARK),
         _purchased(params, f"{joint}_motor", drive.text("motor"), link,
                    geom.cyl("z", motor.num("diameter"), 0, motor.num("length")), placement * loc(z=z_motor), STEEL),
         _purchased(params, f"{joint}_encoder", drive.text("encoder"), link,

@@ -1,0 +1,81 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Each chain joint's drive train and the torque and speed it can deliver at the joint. The numbers come from the
+catalogue data of the motors and gearheads under `purchased:` in the parameter file.
+
+A drive is a motor, then a gearhead, then, on neck_yaw and eyes_tilt only, a belt stage:
+  belt      = joint_teeth / motor_teeth of pulleys.yaw or pulleys.tilt (1 without a belt)
+  reduction = gearhead ratio x belt
+  effort    = min(motor continuous_torque_mNm / 1000 x gearhead ratio x efficiency,
+                  gearhead continuous_torque_Nm) x belt                                    [N m, continuous]
+  velocity  = motor no_load_speed_rpm / reduction                                          [at the joint]
+The gearhead's rating limits the torque on its own output shaft, and on a belted joint that shaft carries the
+motor pulley, so the rating applies before the belt stage. The belt stage then multiplies it: the joint may see
+more torque than the gearhead's rating. The belt stage is taken as lossless, and the belt's own tension rating is
+not in the file, so neither limits the effort; belt_pull (the gearhead shaft's torque over the motor pulley's
+pitch radius) is reported for checking it. The no-load speed at the motor's 12 V is a bound that the joint does
+not reach under load."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .params import CHAIN_JOINTS, HeadParameters
+
+BELTED = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}   # joint -> its pulleys entry
+
+
+@dataclass(frozen=True)
+class DriveLimit:
+    joint: str
+    motor: str                  # purchased keys
+    gearhead: str
+    belt: float                 # belt stage ratio (1: none)
+    reduction: float            # motor turns per joint turn
+    effort: float               # N m at the joint, continuous
+    velocity: float             # rad/s at the joint, at the motor's no-load speed
+    limited_by: str             # "motor" or "gearhead": which rating sets the effort
+    belt_pull: float            # N, the belt's working tension at that effort (0: no belt)
+
+    @property
+    def velocity_deg_s(self) -> float:
+        return math.degrees(self.velocity)
+
+
+def belt_ratio(params: HeadParameters, joint: str) -> float:
+    if joint not in BELTED:
+        return 1.0
+    pulleys = params.geometry("pulleys", BELTED[joint])
+    return pulleys.num("joint_teeth", positive=True) / pulleys.num("motor_teeth", positive=True)
+
+
+def _motor_pulley_radius(params: HeadParameters, joint: str) -> float:
+    """Pitch radius of the motor pulley in metres."""
+    teeth = params.geometry("pulleys", BELTED[joint]).num("motor_teeth", positive=True)
+    return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / (2 * math.pi) / 1000.0
+
+
+def reduction(params: HeadParameters, joint: str) -> float:
+    gearhead = params.purchased(params.drive(joint).text("gearhead"))
+    return gearhead.num("ratio", positive=True) * belt_ratio(params, joint)
+
+
+def limit(params: HeadParameters, joint: str) -> DriveLimit:
+    drive = params.drive(joint)
+    motor_key, gear_key = drive.text("motor"), drive.text("gearhead")
+    motor, gear = params.purchased(motor_key), params.purchased(gear_key)
+    torque = motor.num("continuous_torque_mNm", positive=True) / 1000.0
+    speed = motor.num("no_load_speed_rpm", positive=True)
+    ratio = gear.num("ratio", positive=True)
+    efficiency = gear.num("efficiency", positive=True, maximum=1.0)
+    rating = gear.num("continuous_torque_Nm", positive=True)
+    belt = belt_ratio(params, joint)
+    through = torque * ratio * efficiency
+    shaft = min(through, rating)
+    pull = shaft / _motor_pulley_radius(params, joint) if joint in BELTED else 0.0
+    return DriveLimit(joint, motor_key, gear_key, belt, ratio * belt, shaft * belt,
+                      speed * 2 * math.pi / 60 / (ratio * belt), "motor" if through <= rating else "gearhead", pull)
+
+
+def limits(params: HeadParameters) -> dict[str, DriveLimit]:
+    return {joint: limit(params, joint) for joint in CHAIN_JOINTS}
