@@ -4,8 +4,8 @@
 // test_motor's PID offset, enable, disable and reset (YARP's IPidControl requests beyond the gains).
 // The model has three loops (position, velocity, torque), all enabled at open; the current loop
 // does not exist, so these requests refuse it (its gains are still kept, offset included).
-//   * setPidOffset sets the offset of the controller's gains (getPid shows it), as YARP's
-//     fakeMotionControl does; the simulated loops track ideally, so it does not move the axis.
+//   * setPidOffset sets the offset of the controller's gains (getPid shows it), the value YARP's
+//     IPidControl adds to the output; the simulated loops track ideally, so it does not move the axis.
 //   * disablePid switches a loop off: if its axis runs it, the axis is freed where it is (idle),
 //     and until enablePid no request may make the axis run it (TestMotor::on_axis/on_all refuse).
 //   * resetPid makes what a running loop measures its reference: the position loop holds the
