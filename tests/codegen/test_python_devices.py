@@ -286,6 +286,16 @@ int main() {
   for (int i = 0; i < 50; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
   a.move_to(a.position()); a.stop();
   for (int i = 0; i < 400; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  // Reset loops: a velocity ramp cut short, then a position move held where it is.
+  a.move_at(4);
+  for (int i = 0; i < 3; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.keep_velocity();
+  std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque());
+  for (int i = 0; i < 20; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.move_to(a.position() + 10);
+  for (int i = 0; i < 20; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
+  a.hold();
+  for (int i = 0; i < 20; ++i) { a.step(0.01); std::printf("%.17g %.17g %.17g\n", a.position(), a.velocity(), a.torque()); }
   return 0;
 }
 """
@@ -334,5 +344,18 @@ def test_python_and_cpp_test_motor_share_one_motion_model(tmp_path):
         for _ in range(n):
             a.step(dt)
             py.append((a.position, a.velocity, a.torque()))
+    a.move_at(4.0)
+    for _ in range(3):
+        a.step(0.01)
+        py.append((a.position, a.velocity, a.torque()))
+    a.keep_velocity()
+    py.append((a.position, a.velocity, a.torque()))
+    for command in (lambda: None, lambda: a.move_to(a.position + 10.0), a.hold):
+        command()
+        for _ in range(20):
+            a.step(0.01)
+            py.append((a.position, a.velocity, a.torque()))
     assert py == cpp
+    cut = py[-61]  # keep_velocity: the speed stays as the ramp left it
+    assert 0.0 < cut[1] < 4.0 and all(p[1] == cut[1] for p in py[-60:-40])
     assert py[-1] == (py[-1][0], 0.0, 0.0)  # at rest under position control

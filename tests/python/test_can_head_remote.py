@@ -160,7 +160,8 @@ def velocity_move(client: Client, j: int, speed: float) -> None:
     name = JOINTS[j].name
     assert client.vel.setRefAcceleration(j, ACCELERATION), name
     assert client.vel.velocityMove(j, speed), name
-    assert client.mode.getControlMode(j) == ControlMode.VELOCITY, name
+    # The move travels on the command port, which has no reply (as YARP's): wait for it to act.
+    wait_for(f"{name} in velocity mode", lambda: client.mode.getControlMode(j) == ControlMode.VELOCITY, 2.0)
     time.sleep(0.3)  # past the ramp (0.1 s at the reference acceleration)
     t0, p0 = time.monotonic(), client.enc.getEncoder(j)
     time.sleep(0.8)

@@ -142,6 +142,39 @@ TEST_F(DriverOnVirtualBus, PidsRoundTripAndOtherLoopsAreRefused) {
   EXPECT_TRUE(pid_->getPidOutput(dev::PidType::position, 0, out));
 }
 
+TEST_F(DriverOnVirtualBus, PidOffsetIsSentAndTheRequestsTheBoardsLackFailSayingSo) {
+  dev::Pid before;
+  ASSERT_TRUE(pid_->getPid(dev::PidType::position, 1, before));
+  ASSERT_TRUE(pid_->setPidOffset(dev::PidType::position, 1, 12.0));
+  dev::Pid after;
+  ASSERT_TRUE(pid_->getPid(dev::PidType::position, 1, after));
+  dev::Pid expected = before;
+  expected.offset = 12.0;  // the limits sent with it are the board's own
+  EXPECT_EQ(after, expected);
+  RobogeneCan* driver = nullptr;
+  ASSERT_TRUE(device_.view(driver));
+  EXPECT_FALSE(pid_->setPidOffset(dev::PidType::position, 1, 0.5));
+  EXPECT_NE(driver->last_error().find("setPidOffset (joint 1): PID offset 0.5"), std::string::npos) << driver->last_error();
+  EXPECT_FALSE(pid_->setPidOffset(dev::PidType::velocity, 1, 1.0));
+  EXPECT_NE(driver->last_error().find("no velocity PID, only a position PID"), std::string::npos) << driver->last_error();
+
+  EXPECT_FALSE(pid_->enablePid(dev::PidType::position, 0));
+  EXPECT_EQ(driver->last_error(),
+            "enablePid (joint 0): the boards' protocol has no command to switch a PID on or off (use setControlMode)");
+  EXPECT_FALSE(pid_->disablePid(dev::PidType::position, 0));
+  EXPECT_NE(driver->last_error().find("disablePid (joint 0): the boards' protocol has no command"), std::string::npos);
+  EXPECT_FALSE(pid_->resetPid(dev::PidType::position, 0));
+  EXPECT_EQ(driver->last_error(), "resetPid (joint 0): the boards' protocol has no command to reset a PID");
+  bool enabled = false;
+  EXPECT_FALSE(pid_->isPidEnabled(dev::PidType::position, 0, enabled));
+  EXPECT_NE(driver->last_error().find("isPidEnabled (joint 0): the boards' protocol does not report"), std::string::npos);
+  EXPECT_FALSE(pid_->resetPid(dev::PidType::position, 9));
+  EXPECT_EQ(driver->last_error(), "resetPid (joint 9): no joint 9 (the head has 6)");
+  // Nothing above moved or changed the boards: the gains are as set.
+  ASSERT_TRUE(pid_->getPid(dev::PidType::position, 1, after));
+  EXPECT_EQ(after, expected);
+}
+
 TEST_F(DriverOnVirtualBus, ModesTheBoardsDoNotHaveAreReportedNotAssumed) {
   ASSERT_TRUE(mode_->setControlMode(1, ControlMode::idle));
   ControlMode m{};

@@ -20,6 +20,10 @@ class AxisMotion {
   void move_at(double velocity) { goal_ = Goal::Velocity; ref_velocity_ = velocity; }
   void push(double torque) { goal_ = Goal::Torque; ref_torque_ = torque; }
   void idle() { goal_ = Goal::Idle; velocity_ = 0.0; acceleration_ = 0.0; }
+  // A reset position loop: the present position becomes the target, held from standstill.
+  void hold() { goal_ = Goal::Position; target_ = position_; velocity_ = 0.0; acceleration_ = 0.0; }
+  // A reset velocity loop: the present velocity becomes the commanded one, with no more ramp.
+  void keep_velocity() { goal_ = Goal::Velocity; ref_velocity_ = velocity_; acceleration_ = 0.0; }
   void stop();
   void set_ref_speed(double v) { ref_speed_ = v; }
   void set_ref_acceleration(double a) { ref_acceleration_ = a; }

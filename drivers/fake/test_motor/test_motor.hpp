@@ -6,7 +6,9 @@
 // reference as a damped rigid body; the encoders report that motion. A move or a torque reference
 // switches its axis to the matching control mode, as YARP's test_motor lets the paper's example
 // do; `idle` frees an axis where it is. Each axis keeps the gains and error limits of its four
-// PID controllers; its loops are the motion above (docs/devices.md, test_motor).
+// PID controllers; its loops are the motion above (docs/devices.md, test_motor). A loop can be
+// disabled: an axis never runs a disabled loop (disabling the loop it runs frees it, and a request
+// that would run one is refused), whichever method asks (on_axis and on_all check it).
 //
 // Configuration: axes (1-64, default 4), ref_speed (deg/s, default 10), ref_acceleration
 // (deg/s^2, default 50), max_torque (N m, default 5), inertia (kg m^2, default 0.01), damping
@@ -122,13 +124,26 @@ class TestMotor final : public DeviceDriver,
   bool getPidErrors(PidType pidtype, std::vector<double>& errs) override;
   bool getPidOutput(PidType pidtype, int j, double& out) override;
   bool getPidOutputs(PidType pidtype, std::vector<double>& outs) override;
+  // IPidControl: offset, enable, disable, reset (test_motor_pid_switches.cpp)
+  bool setPidOffset(PidType pidtype, int j, double v) override;
+  bool enablePid(PidType pidtype, int j) override;
+  bool disablePid(PidType pidtype, int j) override;
+  bool resetPid(PidType pidtype, int j) override;
+  bool isPidEnabled(PidType pidtype, int j, bool& enabled) override;
 
  private:
   // The controllers of one axis, indexed by PidType (position, velocity, torque, current).
   struct AxisPids {
     std::array<Pid, 4> gains{};
     std::array<double, 4> error_limits{};
+    std::array<bool, 4> enabled{{true, true, true, false}};  // there is no current loop to enable
   };
+  // The index of a PidType in AxisPids; nullopt for a value outside the enum.
+  static std::optional<std::size_t> pid_index(PidType t);
+  // The index of a loop the model has (position, velocity, torque); nullopt for current.
+  static std::optional<std::size_t> loop_index(PidType t);
+  // False when axis i, in `mode`, would run a disabled loop; with mutex_ held.
+  bool loop_allowed(std::size_t i, ControlMode mode) const;
   // What a running loop follows and what it measures; nullopt when the axis runs another loop.
   struct LoopState {
     double reference;
@@ -166,7 +181,16 @@ bool TestMotor::on_axis(int j, F&& f) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!open_ || j < 0 || static_cast<std::size_t>(j) >= axes_.size()) return false;
   catch_up();
-  return f(axes_[static_cast<std::size_t>(j)], static_cast<std::size_t>(j));
+  const auto i = static_cast<std::size_t>(j);
+  const AxisMotion axis = axes_[i];
+  const ControlMode mode = modes_[i];
+  if (!f(axes_[i], i)) return false;
+  if (!loop_allowed(i, modes_[i])) {  // the request would run a disabled loop: undo it
+    axes_[i] = axis;
+    modes_[i] = mode;
+    return false;
+  }
+  return true;
 }
 
 template <class T, class F>
@@ -178,7 +202,7 @@ bool TestMotor::on_all(const std::vector<T>& values, F&& f) {
   std::vector<AxisMotion> trial = axes_;
   std::vector<ControlMode> trial_modes = modes_;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    if (!f(trial[i], trial_modes[i], values[i])) return false;
+    if (!f(trial[i], trial_modes[i], values[i]) || !loop_allowed(i, trial_modes[i])) return false;
   }
   axes_ = std::move(trial);
   modes_ = std::move(trial_modes);

@@ -17,7 +17,19 @@ namespace {
 
 bool finite(double v) { return std::isfinite(v); }
 
-std::optional<std::size_t> pid_index(PidType t) {
+bool finite_pid(const Pid& p) {
+  for (double v : {p.kp, p.kd, p.ki, p.max_int, p.max_output, p.offset, p.scale, p.stiction_up_val,
+                   p.stiction_down_val, p.kff}) {
+    if (!finite(v)) return false;
+  }
+  return true;
+}
+
+bool valid_limit(double v) { return finite(v) && v >= 0.0; }
+
+}  // namespace
+
+std::optional<std::size_t> TestMotor::pid_index(PidType t) {
   switch (t) {
     case PidType::position:
       return 0;
@@ -30,18 +42,6 @@ std::optional<std::size_t> pid_index(PidType t) {
   }
   return std::nullopt;
 }
-
-bool finite_pid(const Pid& p) {
-  for (double v : {p.kp, p.kd, p.ki, p.max_int, p.max_output, p.offset, p.scale, p.stiction_up_val,
-                   p.stiction_down_val, p.kff}) {
-    if (!finite(v)) return false;
-  }
-  return true;
-}
-
-bool valid_limit(double v) { return finite(v) && v >= 0.0; }
-
-}  // namespace
 
 // ---- ITorqueControl ----------------------------------------------------------------------------
 

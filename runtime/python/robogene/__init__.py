@@ -21,6 +21,7 @@ from ._core import (  # noqa: F401  (re-exported API)
     BufferPolicy,
     Contact,
     Error,
+    JointData,
     MessageInfo,
     NameConfig,
     Network,
@@ -32,6 +33,7 @@ from ._core import (  # noqa: F401  (re-exported API)
     Stamp,
     Value,
     __version__,
+    decode_joint_data,
     vocab,
     vocab_to_string,
 )
@@ -42,6 +44,7 @@ __all__ = [
     "BufferedPort",
     "Contact",
     "Error",
+    "JointData",
     "MessageInfo",
     "NameConfig",
     "Network",
@@ -53,6 +56,7 @@ __all__ = [
     "Stamp",
     "Value",
     "__version__",
+    "decode_joint_data",
     "vocab",
     "vocab_to_string",
 ]

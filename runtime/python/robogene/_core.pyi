@@ -10,7 +10,7 @@ import collections.abc
 import enum
 import typing
 import typing_extensions
-__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'Contact', 'Error', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Port', 'RpcClient', 'RpcServer', 'Stamp', 'Value', 'vocab', 'vocab_to_string']
+__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'Contact', 'Error', 'JointData', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Port', 'RpcClient', 'RpcServer', 'Stamp', 'Value', 'decode_joint_data', 'vocab', 'vocab_to_string']
 class Error(RuntimeError):
     pass
 class ParseError(Error):
@@ -646,8 +646,78 @@ class RpcServer:
         """
         Names of the ports this one sends to.
         """
+class JointData:
+    """
+    A decoded jointData message (YARP 3's stateExt:o): each field is one value per axis, or None when the server flagged it [fail].
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def acceleration(self) -> list[float] | None:
+        """
+        Joint accelerations, deg/s^2.
+        """
+    @property
+    def axes(self) -> int:
+        """
+        The number of axes (values in every field).
+        """
+    @property
+    def control_mode(self) -> list[int] | None:
+        """
+        Control modes, as vocab codes (ControlMode values).
+        """
+    @property
+    def current(self) -> list[float] | None:
+        """
+        Motor currents.
+        """
+    @property
+    def interaction_mode(self) -> list[int] | None:
+        """
+        Interaction modes, as vocab codes.
+        """
+    @property
+    def motor_acceleration(self) -> list[float] | None:
+        """
+        Motor accelerations, deg/s^2.
+        """
+    @property
+    def motor_position(self) -> list[float] | None:
+        """
+        Motor positions, deg.
+        """
+    @property
+    def motor_velocity(self) -> list[float] | None:
+        """
+        Motor speeds, deg/s.
+        """
+    @property
+    def position(self) -> list[float] | None:
+        """
+        Joint positions, deg.
+        """
+    @property
+    def pwm(self) -> list[float] | None:
+        """
+        PWM duty cycles.
+        """
+    @property
+    def torque(self) -> list[float] | None:
+        """
+        Joint torques, N m.
+        """
+    @property
+    def velocity(self) -> list[float] | None:
+        """
+        Joint speeds, deg/s.
+        """
 def _close_all_at_exit() -> None:
     ...
+def decode_joint_data(message: Bottle) -> JointData:
+    """
+    Reads a jointData message; raises robogene.Error naming the item and the field that is wrong.
+    """
 def vocab(chars: str) -> int:
     """
     The integer code of a vocab of up to four characters.

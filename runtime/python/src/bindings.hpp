@@ -17,6 +17,7 @@ void bind_network(pybind11::module_& m);
 void bind_port(pybind11::module_& m);
 void bind_buffered_port(pybind11::module_& m);
 void bind_rpc(pybind11::module_& m);
+void bind_joint_data(pybind11::module_& m);
 
 // A Bottle from a Python sequence, converting each item the way Bottle.add does.
 Bottle bottle_from_sequence(const pybind11::handle& seq);

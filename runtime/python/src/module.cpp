@@ -39,6 +39,7 @@ PYBIND11_MODULE(_core, m) {
   robogene::python::bind_port(m);
   robogene::python::bind_buffered_port(m);
   robogene::python::bind_rpc(m);
+  robogene::python::bind_joint_data(m);
 
   // Ports still open at exit are closed while the interpreter still grants the GIL to the
   // threads that run their callbacks (later, those threads could never finish).

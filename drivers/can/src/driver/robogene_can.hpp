@@ -102,6 +102,11 @@ class RobogeneCan final : public dev::DeviceDriver,
   bool getPidErrors(dev::PidType pidtype, std::vector<double>& errs) override;
   bool getPidOutput(dev::PidType pidtype, int j, double& out) override;
   bool getPidOutputs(dev::PidType pidtype, std::vector<double>& outs) override;
+  bool setPidOffset(dev::PidType pidtype, int j, double v) override;
+  bool enablePid(dev::PidType pidtype, int j) override;
+  bool disablePid(dev::PidType pidtype, int j) override;
+  bool resetPid(dev::PidType pidtype, int j) override;
+  bool isPidEnabled(dev::PidType pidtype, int j, bool& enabled) override;
 
   bool getControlMode(int j, dev::ControlMode& mode) override;
   bool getControlModes(std::vector<dev::ControlMode>& modes) override;

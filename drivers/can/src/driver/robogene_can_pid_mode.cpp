@@ -166,6 +166,43 @@ bool RobogeneCan::getPidOutputs(dev::PidType pidtype, std::vector<double>& outs)
   return read_each(outs, [&](int j, double& o) { return getPidOutput(pidtype, j, o); });
 }
 
+// The offset travels with the output and integral limits (set_position_pid_limits): read the
+// other two back so that only the offset changes.
+bool RobogeneCan::setPidOffset(dev::PidType pidtype, int j, double v) {
+  return guarded("setPidOffset", j, [&] {
+    only_position(pidtype);
+    const std::int16_t offset = to_i16(v, "offset");
+    const auto l = std::get<GetPositionPidLimitsReply>(request(j, GetPositionPidLimits{}).message);
+    send(j, SetPositionPidLimits{offset, l.output_limit, l.integral_limit});
+  });
+}
+// The boards' protocol has no command to switch the position loop on or off, to reset it, or to
+// report whether it runs (only control modes, which the boards change themselves on faults).
+bool RobogeneCan::enablePid(dev::PidType, int j) {
+  return guarded("enablePid", j, [&] {
+    joint(j);
+    throw Error("the boards' protocol has no command to switch a PID on or off (use setControlMode)");
+  });
+}
+bool RobogeneCan::disablePid(dev::PidType, int j) {
+  return guarded("disablePid", j, [&] {
+    joint(j);
+    throw Error("the boards' protocol has no command to switch a PID on or off (use setControlMode)");
+  });
+}
+bool RobogeneCan::resetPid(dev::PidType, int j) {
+  return guarded("resetPid", j, [&] {
+    joint(j);
+    throw Error("the boards' protocol has no command to reset a PID");
+  });
+}
+bool RobogeneCan::isPidEnabled(dev::PidType, int j, bool&) {
+  return guarded("isPidEnabled", j, [&] {
+    joint(j);
+    throw Error("the boards' protocol does not report whether a PID is switched on (getControlMode says what runs)");
+  });
+}
+
 // ---- IControlMode ------------------------------------------------------------------------------
 
 bool RobogeneCan::getControlMode(int j, dev::ControlMode& mode) {

@@ -7,8 +7,9 @@ devices (docs/devices.md, "On the network").
   ``rpc.RpcServer``, ``<name>/command:i`` takes streamed commands, ``<name>/state:o`` and
   ``<name>/stateExt:o`` publish the encoders (a YARP Vector, and jointData) every ``period`` with
   a Stamp envelope. YARP's remote_controlboard and the C++ one can use it.
-* ``RemoteControlboard`` (device ``remote_controlboard``) is a served control board seen from
-  Python: every method is one RPC through the generated ``ControlboardClient``.
+* ``RemoteControlboard`` (device ``remote_controlboard``, in remote_controlboard.py) is a served
+  control board seen from Python, with the C++ client's ports: encoders from ``stateExt:o``,
+  velocity moves on ``command:i``, the rest by RPC.
 """
 from __future__ import annotations
 
@@ -16,9 +17,7 @@ import threading
 import time
 from typing import Any, List, Optional
 
-from .. import Bottle, BufferedPort, Error, Network, Port, RpcClient, RpcServer, Value
-from .device_driver import DeviceDriver
-from .generated.clients import ControlboardClient
+from .. import Bottle, BufferedPort, Network, Port, RpcServer, Value
 from .property import ConfigError, Property
 from .rpc import RpcServer as Dispatch
 
@@ -132,44 +131,4 @@ class ControlboardNws:
         self.close()
 
 
-class RemoteControlboard(ControlboardClient, DeviceDriver):
-    """remote_controlboard: keys remote (the server's prefix), local (this client's prefix),
-    server (name server HOST:PORT, else yarp.conf). Opens ``<local>/rpc:o`` to ``<remote>/rpc:i``."""
-
-    def __init__(self) -> None:
-        super().__init__(self._call)
-        self._client: Optional[RpcClient] = None
-
-    def _call(self, request: Bottle) -> Bottle:
-        # A failed exchange is an empty reply: the method then returns None/False, as in C++.
-        if self._client is None:
-            return Bottle()
-        try:
-            return self._client.call(request)
-        except Error:
-            return Bottle()
-
-    def open(self, config: Property) -> bool:
-        self.close()
-        remote, local = _port_name(config, "remote"), _port_name(config, "local")
-        network = _network(config)
-        kw = {"network": network} if network is not None else {}
-        try:
-            self._client = RpcClient(f"{local}/rpc:o", server=f"{remote}/rpc:i", **kw)
-            self._client.call(Bottle.from_text("[get] [prot]"))  # raises naming an absent server
-            self.check_server()
-            if self.getAxes() is None:
-                raise Error(f"{remote}/rpc:i does not answer [get] [axes]")
-        except Error as exc:
-            self.close()
-            raise ConfigError(f"remote_controlboard {local} -> {remote}: {exc}") from None
-        return True
-
-    def close(self) -> bool:
-        if self._client is not None:
-            self._client.close()
-            self._client = None
-        return True
-
-
-__all__ = ["ControlboardNws", "RemoteControlboard", "encode_joint_data"]
+__all__ = ["ControlboardNws", "encode_joint_data"]

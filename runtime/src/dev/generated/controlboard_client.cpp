@@ -498,6 +498,44 @@ bool ControlboardClient::getPidOutputs(PidType pidtype, std::vector<double>& out
   return read(reply[2], outs);
 }
 
+bool ControlboardClient::setPidOffset(PidType pidtype, int j, double v) {
+  Bottle request = start({"set", "pid", "off"});
+  write(request, pidtype);
+  write(request, static_cast<std::int32_t>(j));
+  write(request, v);
+  return command(request);
+}
+
+bool ControlboardClient::enablePid(PidType pidtype, int j) {
+  Bottle request = start({"set", "pid", "ena"});
+  write(request, pidtype);
+  write(request, static_cast<std::int32_t>(j));
+  return command(request);
+}
+
+bool ControlboardClient::disablePid(PidType pidtype, int j) {
+  Bottle request = start({"set", "pid", "dis"});
+  write(request, pidtype);
+  write(request, static_cast<std::int32_t>(j));
+  return command(request);
+}
+
+bool ControlboardClient::resetPid(PidType pidtype, int j) {
+  Bottle request = start({"set", "pid", "res"});
+  write(request, pidtype);
+  write(request, static_cast<std::int32_t>(j));
+  return command(request);
+}
+
+bool ControlboardClient::isPidEnabled(PidType pidtype, int j, bool& enabled) {
+  Bottle request = start({"get", "pid", "ena"});
+  write(request, pidtype);
+  write(request, static_cast<std::int32_t>(j));
+  Bottle reply;
+  if (!query(request, reply, 1)) return false;
+  return read(reply[2], enabled);
+}
+
 bool ControlboardClient::getControlMode(int j, ControlMode& mode) {
   Bottle request = start({"get", "icmd", "cmod"});
   write(request, static_cast<std::int32_t>(j));

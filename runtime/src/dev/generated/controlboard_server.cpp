@@ -61,6 +61,27 @@ bool h_get_icmd_cmod(const ControlboardServer::Interfaces& d, const Bottle& req,
   return true;
 }
 
+// [get] [pid] [ena] <pidtype> <j>: IPidControl.isPidEnabled
+bool h_get_pid_ena(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
+  if (req.size() != 5) return false;
+  PidType pidtype{};
+  std::int32_t j{};
+  if (!read(req[3], pidtype) ||
+      !read(req[4], j)) {
+    return false;
+  }
+  bool enabled{};
+  bool ok = false;
+  if (d.ipidcontrol) {
+    ok = d.ipidcontrol->isPidEnabled(pidtype, j, enabled);
+  }
+  if (!ok) return false;
+  reply.add(Value::vocab(vocab("is")));
+  reply.add(req[1]);
+  write(reply, enabled);
+  return true;
+}
+
 // [get] [pid] [err] <pidtype> <j>: IPidControl.getPidError
 bool h_get_pid_err(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
   if (req.size() != 5) return false;
@@ -408,6 +429,34 @@ bool h_set_icmd_cmod(const ControlboardServer::Interfaces& d, const Bottle& req,
   return false;
 }
 
+// [set] [pid] [dis] <pidtype> <j>: IPidControl.disablePid
+bool h_set_pid_dis(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
+  if (req.size() != 5) return false;
+  PidType pidtype{};
+  std::int32_t j{};
+  if (!read(req[3], pidtype) ||
+      !read(req[4], j)) {
+    return false;
+  }
+  (void)reply;
+  if (d.ipidcontrol) return d.ipidcontrol->disablePid(pidtype, j);
+  return false;
+}
+
+// [set] [pid] [ena] <pidtype> <j>: IPidControl.enablePid
+bool h_set_pid_ena(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
+  if (req.size() != 5) return false;
+  PidType pidtype{};
+  std::int32_t j{};
+  if (!read(req[3], pidtype) ||
+      !read(req[4], j)) {
+    return false;
+  }
+  (void)reply;
+  if (d.ipidcontrol) return d.ipidcontrol->enablePid(pidtype, j);
+  return false;
+}
+
 // [set] [pid] [lim] <pidtype> <j> <limit>: IPidControl.setPidErrorLimit
 bool h_set_pid_lim(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
   if (req.size() != 6) return false;
@@ -435,6 +484,22 @@ bool h_set_pid_lims(const ControlboardServer::Interfaces& d, const Bottle& req, 
   }
   (void)reply;
   if (d.ipidcontrol) return d.ipidcontrol->setPidErrorLimits(pidtype, limits);
+  return false;
+}
+
+// [set] [pid] [off] <pidtype> <j> <v>: IPidControl.setPidOffset
+bool h_set_pid_off(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
+  if (req.size() != 6) return false;
+  PidType pidtype{};
+  std::int32_t j{};
+  double v{};
+  if (!read(req[3], pidtype) ||
+      !read(req[4], j) ||
+      !read(req[5], v)) {
+    return false;
+  }
+  (void)reply;
+  if (d.ipidcontrol) return d.ipidcontrol->setPidOffset(pidtype, j, v);
   return false;
 }
 
@@ -495,6 +560,20 @@ bool h_set_pid_refs(const ControlboardServer::Interfaces& d, const Bottle& req, 
   }
   (void)reply;
   if (d.ipidcontrol) return d.ipidcontrol->setPidReferences(pidtype, refs);
+  return false;
+}
+
+// [set] [pid] [res] <pidtype> <j>: IPidControl.resetPid
+bool h_set_pid_res(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
+  if (req.size() != 5) return false;
+  PidType pidtype{};
+  std::int32_t j{};
+  if (!read(req[3], pidtype) ||
+      !read(req[4], j)) {
+    return false;
+  }
+  (void)reply;
+  if (d.ipidcontrol) return d.ipidcontrol->resetPid(pidtype, j);
   return false;
 }
 
@@ -1022,6 +1101,7 @@ bool h_set_vmos(const ControlboardServer::Interfaces& d, const Bottle& req, Bott
 const Route kRoutes[] = {
     {{vocab("get"), vocab("icmd"), vocab("cmds")}, 3, true, false, &h_get_icmd_cmds},
     {{vocab("get"), vocab("icmd"), vocab("cmod")}, 3, true, false, &h_get_icmd_cmod},
+    {{vocab("get"), vocab("pid"), vocab("ena")}, 3, false, true, &h_get_pid_ena},
     {{vocab("get"), vocab("pid"), vocab("err")}, 3, false, true, &h_get_pid_err},
     {{vocab("get"), vocab("pid"), vocab("errs")}, 3, false, true, &h_get_pid_errs},
     {{vocab("get"), vocab("pid"), vocab("lim")}, 3, false, true, &h_get_pid_lim},
@@ -1041,12 +1121,16 @@ const Route kRoutes[] = {
     {{vocab("get"), vocab("torq"), vocab("trqs")}, 3, true, false, &h_get_torq_trqs},
     {{vocab("set"), vocab("icmd"), vocab("cmds")}, 3, false, true, &h_set_icmd_cmds},
     {{vocab("set"), vocab("icmd"), vocab("cmod")}, 3, false, true, &h_set_icmd_cmod},
+    {{vocab("set"), vocab("pid"), vocab("dis")}, 3, false, true, &h_set_pid_dis},
+    {{vocab("set"), vocab("pid"), vocab("ena")}, 3, false, true, &h_set_pid_ena},
     {{vocab("set"), vocab("pid"), vocab("lim")}, 3, false, true, &h_set_pid_lim},
     {{vocab("set"), vocab("pid"), vocab("lims")}, 3, false, true, &h_set_pid_lims},
+    {{vocab("set"), vocab("pid"), vocab("off")}, 3, false, true, &h_set_pid_off},
     {{vocab("set"), vocab("pid"), vocab("pid")}, 3, false, true, &h_set_pid_pid},
     {{vocab("set"), vocab("pid"), vocab("pids")}, 3, false, true, &h_set_pid_pids},
     {{vocab("set"), vocab("pid"), vocab("ref")}, 3, false, true, &h_set_pid_ref},
     {{vocab("set"), vocab("pid"), vocab("refs")}, 3, false, true, &h_set_pid_refs},
+    {{vocab("set"), vocab("pid"), vocab("res")}, 3, false, true, &h_set_pid_res},
     {{vocab("set"), vocab("torq"), vocab("ref")}, 3, false, true, &h_set_torq_ref},
     {{vocab("set"), vocab("torq"), vocab("refs")}, 3, false, true, &h_set_torq_refs},
     {{vocab("get"), vocab("acc")}, 2, true, false, &h_get_acc},
@@ -1144,6 +1228,11 @@ const char* const kUsage[] = {
     "[get] [pid] [errs] $pidtype  # The current errors of one controller of every axis.",
     "[get] [pid] [out] $pidtype $j  # The current output of one controller (for example a PWM value).",
     "[get] [pid] [outs] $pidtype  # The current outputs of one controller of every axis.",
+    "[set] [pid] [off] $pidtype $j $v  # Set the value added to one controller's output (the offset of its gains).",
+    "[set] [pid] [ena] $pidtype $j  # Switch one controller on.",
+    "[set] [pid] [dis] $pidtype $j  # Switch one controller off, so that it no longer drives its axis.",
+    "[set] [pid] [res] $pidtype $j  # Reset one controller, usually making what it measures its reference and clearing its integral.",
+    "[get] [pid] [ena] $pidtype $j  # Whether one controller is switched on.",
     "[get] [icmd] [cmod] $j  # The control mode of one axis.",
     "[get] [icmd] [cmds]  # The control mode of every axis.",
     "[set] [icmd] [cmod] $j $mode  # Switch one axis to a control mode.",
@@ -1213,12 +1302,16 @@ bool ControlboardServer::command(const Bottle& message) {
   static const CommandRoute kCommands[] = {
       {{vocab("icmd"), vocab("cmds")}, 2, {vocab("set"), vocab("icmd"), vocab("cmds")}, 3, true},  // IControlMode.setControlModes
       {{vocab("icmd"), vocab("cmod")}, 2, {vocab("set"), vocab("icmd"), vocab("cmod")}, 3, false},  // IControlMode.setControlMode
+      {{vocab("pid"), vocab("dis")}, 2, {vocab("set"), vocab("pid"), vocab("dis")}, 3, false},  // IPidControl.disablePid
+      {{vocab("pid"), vocab("ena")}, 2, {vocab("set"), vocab("pid"), vocab("ena")}, 3, false},  // IPidControl.enablePid
       {{vocab("pid"), vocab("lim")}, 2, {vocab("set"), vocab("pid"), vocab("lim")}, 3, false},  // IPidControl.setPidErrorLimit
       {{vocab("pid"), vocab("lims")}, 2, {vocab("set"), vocab("pid"), vocab("lims")}, 3, true},  // IPidControl.setPidErrorLimits
+      {{vocab("pid"), vocab("off")}, 2, {vocab("set"), vocab("pid"), vocab("off")}, 3, false},  // IPidControl.setPidOffset
       {{vocab("pid"), vocab("pid")}, 2, {vocab("set"), vocab("pid"), vocab("pid")}, 3, false},  // IPidControl.setPid
       {{vocab("pid"), vocab("pids")}, 2, {vocab("set"), vocab("pid"), vocab("pids")}, 3, true},  // IPidControl.setPids
       {{vocab("pid"), vocab("ref")}, 2, {vocab("set"), vocab("pid"), vocab("ref")}, 3, false},  // IPidControl.setPidReference
       {{vocab("pid"), vocab("refs")}, 2, {vocab("set"), vocab("pid"), vocab("refs")}, 3, true},  // IPidControl.setPidReferences
+      {{vocab("pid"), vocab("res")}, 2, {vocab("set"), vocab("pid"), vocab("res")}, 3, false},  // IPidControl.resetPid
       {{vocab("torq"), vocab("ref")}, 2, {vocab("set"), vocab("torq"), vocab("ref")}, 3, false},  // ITorqueControl.setRefTorque
       {{vocab("torq"), vocab("refs")}, 2, {vocab("set"), vocab("torq"), vocab("refs")}, 3, true},  // ITorqueControl.setRefTorques
       {{vocab("acc")}, 1, {vocab("set"), vocab("acc")}, 2, false},  // IPositionControl.setRefAcceleration

@@ -6,7 +6,6 @@
 #include <exception>
 
 #include "robogene/dev/nws/device_port.hpp"
-#include "robogene/dev/rpc_codec.hpp"
 #include "robogene/error.hpp"
 #include "robogene/log.hpp"
 #include "robogene/network.hpp"
@@ -73,44 +72,69 @@ bool RemoteControlboard::close() {
   command_.close();
   rpc_.close();
   std::lock_guard<std::mutex> lock(state_mutex_);
-  positions_.clear();
+  latest_.reset();
+  warned_malformed_ = false;
   return true;
 }
 
 void RemoteControlboard::on_state(const Bottle& joint_data) {
-  // jointData: (jointPosition) [ok] ... ; only the positions are used here.
-  std::vector<double> positions;
-  if (joint_data.size() < 2 || !rpc::read(joint_data[0], positions) ||
-      rpc::vocab_of(joint_data[1]) != vocab("ok")) {
+  JointData d;
+  try {
+    d = decode_joint_data(joint_data);
+  } catch (const Error& e) {
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    if (!warned_malformed_) log::warn(local_ + "/stateExt:i", std::string("ignoring jointData: ") + e.what());
+    warned_malformed_ = true;
     return;
   }
+  if (d.position.values.size() != static_cast<std::size_t>(axes_)) return;  // another board's
   std::lock_guard<std::mutex> lock(state_mutex_);
-  positions_ = std::move(positions);
-  positions_at_ = std::chrono::steady_clock::now();
+  latest_ = std::move(d);
+  latest_at_ = std::chrono::steady_clock::now();
 }
 
-bool RemoteControlboard::fresh_encoders(std::vector<double>& vs) {
+bool RemoteControlboard::fresh(Field field, std::vector<double>& vs) {
   std::lock_guard<std::mutex> lock(state_mutex_);
-  if (positions_.empty() || std::chrono::steady_clock::now() - positions_at_ > kStateTimeout) {
+  if (!latest_ || std::chrono::steady_clock::now() - latest_at_ > kStateTimeout || !((*latest_).*field).valid) {
     return false;
   }
-  vs = positions_;
+  vs = ((*latest_).*field).values;
+  return true;
+}
+
+std::optional<bool> RemoteControlboard::fresh_one(Field field, int j, double& v) {
+  std::vector<double> vs;
+  if (!fresh(field, vs)) return std::nullopt;
+  if (j < 0 || static_cast<std::size_t>(j) >= vs.size()) return false;
+  v = vs[static_cast<std::size_t>(j)];
   return true;
 }
 
 bool RemoteControlboard::getEncoders(std::vector<double>& vs) {
-  if (fresh_encoders(vs)) return true;
-  return ControlboardClient::getEncoders(vs);
+  return fresh(&JointData::position, vs) || ControlboardClient::getEncoders(vs);
 }
 
 bool RemoteControlboard::getEncoder(int j, double& v) {
-  std::vector<double> vs;
-  if (fresh_encoders(vs)) {
-    if (j < 0 || static_cast<std::size_t>(j) >= vs.size()) return false;
-    v = vs[static_cast<std::size_t>(j)];
-    return true;
-  }
+  if (auto got = fresh_one(&JointData::position, j, v)) return *got;
   return ControlboardClient::getEncoder(j, v);
+}
+
+bool RemoteControlboard::getEncoderSpeeds(std::vector<double>& sps) {
+  return fresh(&JointData::velocity, sps) || ControlboardClient::getEncoderSpeeds(sps);
+}
+
+bool RemoteControlboard::getEncoderSpeed(int j, double& sp) {
+  if (auto got = fresh_one(&JointData::velocity, j, sp)) return *got;
+  return ControlboardClient::getEncoderSpeed(j, sp);
+}
+
+bool RemoteControlboard::getEncoderAccelerations(std::vector<double>& accs) {
+  return fresh(&JointData::acceleration, accs) || ControlboardClient::getEncoderAccelerations(accs);
+}
+
+bool RemoteControlboard::getEncoderAcceleration(int j, double& acc) {
+  if (auto got = fresh_one(&JointData::acceleration, j, acc)) return *got;
+  return ControlboardClient::getEncoderAcceleration(j, acc);
 }
 
 bool RemoteControlboard::velocityMove(int j, double sp) {

@@ -150,6 +150,16 @@ class ControlboardClient : public IEncoders, public IPositionControl, public IVe
 
   bool getPidOutputs(PidType pidtype, std::vector<double>& outs) override;
 
+  bool setPidOffset(PidType pidtype, int j, double v) override;
+
+  bool enablePid(PidType pidtype, int j) override;
+
+  bool disablePid(PidType pidtype, int j) override;
+
+  bool resetPid(PidType pidtype, int j) override;
+
+  bool isPidEnabled(PidType pidtype, int j, bool& enabled) override;
+
   bool getControlMode(int j, ControlMode& mode) override;
 
   bool getControlModes(std::vector<ControlMode>& modes) override;

@@ -25,7 +25,7 @@ namespace robogene::dev {
 class ControlboardServer {
  public:
   static constexpr const char* kServiceName = "controlboard";
-  static constexpr const char* kFingerprint = "865f94bcbd3aedde";
+  static constexpr const char* kFingerprint = "b78167ee398e4351";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {

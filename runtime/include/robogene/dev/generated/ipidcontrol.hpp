@@ -19,7 +19,7 @@ namespace robogene::dev {
 class IPidControl {
  public:
   static constexpr const char* kInterfaceName = "IPidControl";
-  static constexpr const char* kFingerprint = "f0f2670355e34013";
+  static constexpr const char* kFingerprint = "4f50ff3c849e6ef4";
   static constexpr int kVersion = 1;
 
   virtual ~IPidControl() = default;
@@ -103,6 +103,31 @@ class IPidControl {
   // in pidtype; out outs
   // Wire: [get] [pid] [outs], one value per axis.
   virtual bool getPidOutputs(PidType pidtype, std::vector<double>& outs) = 0;
+
+  // Set the value added to one controller's output (the offset of its gains).
+  // in pidtype; in j; in v
+  // Wire: [set] [pid] [off].
+  virtual bool setPidOffset(PidType pidtype, int j, double v) = 0;
+
+  // Switch one controller on.
+  // in pidtype; in j
+  // Wire: [set] [pid] [ena].
+  virtual bool enablePid(PidType pidtype, int j) = 0;
+
+  // Switch one controller off, so that it no longer drives its axis.
+  // in pidtype; in j
+  // Wire: [set] [pid] [dis].
+  virtual bool disablePid(PidType pidtype, int j) = 0;
+
+  // Reset one controller, usually making what it measures its reference and clearing its integral.
+  // in pidtype; in j
+  // Wire: [set] [pid] [res].
+  virtual bool resetPid(PidType pidtype, int j) = 0;
+
+  // Whether one controller is switched on.
+  // in pidtype; in j; out enabled
+  // Wire: [get] [pid] [ena].
+  virtual bool isPidEnabled(PidType pidtype, int j, bool& enabled) = 0;
 };
 
 }  // namespace robogene::dev

@@ -4,8 +4,9 @@
 // remote_controlboard: a device that is a control board on the network (paper section 3.4),
 // YARP 3's client of the same name. It implements every control-board interface through the
 // generated ControlboardClient over RPC, and like YARP's it
-//   * reads encoders from the server's stateExt:o stream (falling back to RPC when the stream
-//     is older than 0.5 s), and
+//   * reads the encoders (positions, speeds, accelerations) from the server's stateExt:o stream
+//     (jointData), falling back to RPC when the last message is older than 0.5 s or the server
+//     flagged that field [fail], and
 //   * sends single-joint velocity moves on the streaming command port.
 // Configuration: remote (the server's prefix, e.g. /motors), local (this client's prefix),
 // carrier (of the two streams, default udp as YARP's), server (name server HOST:PORT).
@@ -21,6 +22,7 @@
 
 #include "robogene/dev/device_driver.hpp"
 #include "robogene/dev/generated/controlboard_client.hpp"
+#include "robogene/dev/joint_data.hpp"
 #include "robogene/name_client.hpp"
 #include "robogene/port.hpp"
 
@@ -36,13 +38,21 @@ class RemoteControlboard final : public DeviceDriver, public ControlboardClient 
 
   bool getEncoder(int j, double& v) override;
   bool getEncoders(std::vector<double>& vs) override;
+  bool getEncoderSpeed(int j, double& sp) override;
+  bool getEncoderSpeeds(std::vector<double>& sps) override;
+  bool getEncoderAcceleration(int j, double& acc) override;
+  bool getEncoderAccelerations(std::vector<double>& accs) override;
   bool velocityMove(int j, double sp) override;
 
  private:
+  using Field = JointDataField<double> JointData::*;
+
   bool call(const Bottle& request, Bottle& reply);
   void on_state(const Bottle& joint_data);
-  // The joint positions of the latest jointData, if it is fresh.
-  bool fresh_encoders(std::vector<double>& vs);
+  // One field of the latest jointData, if that message is fresh and the field valid.
+  bool fresh(Field field, std::vector<double>& vs);
+  // Axis j of a fresh field; nullopt (ask by RPC) when there is none. False for a bad j.
+  std::optional<bool> fresh_one(Field field, int j, double& v);
 
   std::string remote_, local_;
   std::optional<NameClient> names_;
@@ -53,8 +63,9 @@ class RemoteControlboard final : public DeviceDriver, public ControlboardClient 
   std::int32_t axes_ = 0;
 
   std::mutex state_mutex_;
-  std::vector<double> positions_;
-  std::chrono::steady_clock::time_point positions_at_{};
+  std::optional<JointData> latest_;  // the latest well-formed jointData with one value per axis
+  std::chrono::steady_clock::time_point latest_at_{};
+  bool warned_malformed_ = false;
 };
 
 }  // namespace robogene::dev

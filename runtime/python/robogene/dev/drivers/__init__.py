@@ -7,7 +7,7 @@ from .test_motor import TestMotor
 
 def _remote_controlboard():
     # Imported when first created: it needs the compiled core, the simulated drivers do not.
-    from ..network import RemoteControlboard
+    from ..remote_controlboard import RemoteControlboard
     return RemoteControlboard()
 
 

@@ -85,6 +85,14 @@ class AxisMotion:
     def idle(self) -> None:
         self.goal, self.velocity, self.acceleration = IDLE, 0.0, 0.0
 
+    def hold(self) -> None:
+        """A reset position loop: the present position becomes the target, held from standstill."""
+        self.goal, self.target, self.velocity, self.acceleration = POSITION, self.position, 0.0, 0.0
+
+    def keep_velocity(self) -> None:
+        """A reset velocity loop: the present velocity becomes the commanded one, with no more ramp."""
+        self.goal, self.ref_velocity, self.acceleration = VELOCITY, self.velocity, 0.0
+
     def stop(self) -> None:
         if self.goal == POSITION:
             self.target = self.position + self.velocity * abs(self.velocity) / (2.0 * self.ref_acceleration)

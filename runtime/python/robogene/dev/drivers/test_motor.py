@@ -5,6 +5,7 @@ drivers/fake/test_motor/test_motor.hpp and test_motor_torque_pid.cpp for the beh
 configuration keys)."""
 from __future__ import annotations
 
+import copy
 import math
 import threading
 from typing import Callable, List, Optional, Sequence
@@ -14,6 +15,7 @@ from ..generated import (ControlMode, IControlMode, IEncoders, IPidControl, IPos
                          IVelocityControl)
 from ..property import Property
 from .axis_motion import POSITION, AxisMotion
+from .test_motor_pid_switches import PidSwitches
 from .test_motor_torque_pid import TorqueAndPids
 
 
@@ -25,7 +27,7 @@ def _positive(v) -> bool:
     return _finite(v) and v > 0
 
 
-class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVelocityControl, IControlMode,
+class TestMotor(TorqueAndPids, PidSwitches, DeviceDriver, IEncoders, IPositionControl, IVelocityControl, IControlMode,
                 ITorqueControl, IPidControl, ISimulationClock):
     __test__ = False  # not a pytest test class, despite the name
 
@@ -39,6 +41,7 @@ class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVeloc
         self._max_torque = 5.0
         self._pids: List[dict] = []
         self._error_limits: List[dict] = []
+        self._enabled: List[dict] = []
 
     # ---- DeviceDriver, ISimulationClock -----------------------------------------------------
 
@@ -57,6 +60,7 @@ class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVeloc
             self._max_torque = max_torque
             self._modes = [ControlMode.POSITION] * n
             self._reset_pids(n)
+            self._reset_switches(n)
             self._last = self._clock.now()
             self._open = True
             return True
@@ -66,6 +70,7 @@ class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVeloc
             self._open = False
             self._axes, self._modes = [], []
             self._reset_pids(0)
+            self._reset_switches(0)
             return True
 
     def now(self) -> float:
@@ -96,15 +101,28 @@ class TestMotor(TorqueAndPids, DeviceDriver, IEncoders, IPositionControl, IVeloc
     def _set_axis(self, j, value, check, f) -> bool:
         if not check(value):
             return False
-        return self._on_axis(j, lambda a, i: f(a, i, value) is not False) is True
+
+        def apply(a: AxisMotion, i: int) -> bool:
+            axis, mode = copy.copy(a), self._modes[i]
+            if f(a, i, value) is False:
+                return False
+            if not self._loop_allowed(i, self._modes[i]):  # it would run a disabled loop: undo
+                self._axes[i], self._modes[i] = axis, mode
+                return False
+            return True
+        return self._on_axis(j, apply) is True
 
     def _set_all(self, values: Sequence, check, f) -> bool:
         with self._lock:
             if not self._open or len(values) != len(self._axes) or not all(check(v) for v in values):
                 return False
             self._catch_up()
+            axes, modes = [copy.copy(a) for a in self._axes], list(self._modes)
             for i, v in enumerate(values):
                 f(self._axes[i], i, v)
+            if not all(self._loop_allowed(i, m) for i, m in enumerate(self._modes)):
+                self._axes, self._modes = axes, modes  # one axis would run a disabled loop
+                return False
             return True
 
     def _read_all(self, f) -> Optional[list]:

@@ -194,6 +194,21 @@ class ControlboardClient(RpcClient, IEncoders, IPositionControl, IVelocityContro
     def getPidOutputs(self, pidtype: PidType) -> Optional[List[float]]:
         return self._query(["get", "pid", "outs"], ("PidType", ), (pidtype, ), ("float64[]", ))
 
+    def setPidOffset(self, pidtype: PidType, j: int, v: float) -> bool:
+        return self._command(["set", "pid", "off"], ("PidType", "joint", "float64", ), (pidtype, j, v, ))
+
+    def enablePid(self, pidtype: PidType, j: int) -> bool:
+        return self._command(["set", "pid", "ena"], ("PidType", "joint", ), (pidtype, j, ))
+
+    def disablePid(self, pidtype: PidType, j: int) -> bool:
+        return self._command(["set", "pid", "dis"], ("PidType", "joint", ), (pidtype, j, ))
+
+    def resetPid(self, pidtype: PidType, j: int) -> bool:
+        return self._command(["set", "pid", "res"], ("PidType", "joint", ), (pidtype, j, ))
+
+    def isPidEnabled(self, pidtype: PidType, j: int) -> Optional[bool]:
+        return self._query(["get", "pid", "ena"], ("PidType", "joint", ), (pidtype, j, ), ("bool", ))
+
     def getControlMode(self, j: int) -> Optional[ControlMode]:
         return self._query(["get", "icmd", "cmod"], ("joint", ), (j, ), ("ControlMode", ))
 

@@ -152,7 +152,7 @@ class IPidControl(abc.ABC):
     """Read and tune the PID controllers of each axis, whichever control loop they close."""
 
     INTERFACE_NAME = "IPidControl"
-    FINGERPRINT = "f0f2670355e34013"
+    FINGERPRINT = "4f50ff3c849e6ef4"
     VERSION = 1
 
     @abc.abstractmethod
@@ -218,6 +218,26 @@ class IPidControl(abc.ABC):
     @abc.abstractmethod
     def getPidOutputs(self, pidtype: PidType) -> Optional[List[float]]:
         """The current outputs of one controller of every axis. Wire: [get] [pid] [outs]."""
+
+    @abc.abstractmethod
+    def setPidOffset(self, pidtype: PidType, j: int, v: float) -> bool:
+        """Set the value added to one controller's output (the offset of its gains). Wire: [set] [pid] [off]."""
+
+    @abc.abstractmethod
+    def enablePid(self, pidtype: PidType, j: int) -> bool:
+        """Switch one controller on. Wire: [set] [pid] [ena]."""
+
+    @abc.abstractmethod
+    def disablePid(self, pidtype: PidType, j: int) -> bool:
+        """Switch one controller off, so that it no longer drives its axis. Wire: [set] [pid] [dis]."""
+
+    @abc.abstractmethod
+    def resetPid(self, pidtype: PidType, j: int) -> bool:
+        """Reset one controller, usually making what it measures its reference and clearing its integral. Wire: [set] [pid] [res]."""
+
+    @abc.abstractmethod
+    def isPidEnabled(self, pidtype: PidType, j: int) -> Optional[bool]:
+        """Whether one controller is switched on. Wire: [get] [pid] [ena]."""
 
 
 class IPositionControl(abc.ABC):

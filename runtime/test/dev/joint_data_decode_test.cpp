@@ -1,0 +1,120 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// decode_joint_data: YARP 3.5's captured jointData, our own encoder's output, and malformed
+// messages, each refused with the item and field at fault.
+#include <gtest/gtest.h>
+
+#include "robogene/dev/generated/interfaces.hpp"
+#include "robogene/dev/joint_data.hpp"
+#include "robogene/dev/poly_driver.hpp"
+#include "robogene/dev/simulation_clock.hpp"
+#include "robogene/error.hpp"
+
+using namespace robogene;
+using namespace robogene::dev;
+
+namespace {
+
+// One stateExt:o message of YARP 3.5's fakeMotionControl with 4 axes, as in joint_data_test.cpp
+// (reference capture sniff_stateExt.txt).
+const char* kCaptured =
+    "00010000160000000a01000004000000000000000000f03f000000000000004000000000000008400000000000001040"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a01000004000000000000000000244000000000000034400000000000003e400000000000004440"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
+    "090000006f6b00000a010000040000000000000000804040000000000000414000000000008041400000000000004240"
+    "090000006f6b00000a010000040000000000000000c8a940000000000090aa40000000000058ab40000000000020ac40"
+    "090000006f6b00000101000004000000706f7300706f7300706f7300706f7300090000006f6b00000101000004000000"
+    "00000000000000000000000000000000090000006f6b0000";
+
+Bottle from_hex(const std::string& hex) {
+  std::vector<std::uint8_t> bytes;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
+    bytes.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(i, 2), nullptr, 16)));
+  }
+  return Bottle::from_bytes(bytes);
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    decode_joint_data(Bottle::from_text(text));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A well-formed two-axis message in text, with `field` (0-10) replaced by `replacement`.
+std::string two_axes_with(std::size_t field, const std::string& replacement) {
+  std::string out;
+  for (std::size_t f = 0; f < 11; ++f) {
+    if (f == field) {
+      out += replacement + " ";
+    } else {
+      out += f >= 9 ? "(0 0) [ok] " : "(1.5 2.5) [ok] ";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(JointDataDecode, ReadsYarp35sCapturedMessage) {
+  const JointData d = decode_joint_data(from_hex(kCaptured));
+  EXPECT_EQ(d.position.values, (std::vector<double>{1, 2, 3, 4}));
+  EXPECT_TRUE(d.position.valid);
+  EXPECT_EQ(d.velocity.values, (std::vector<double>{0, 0, 0, 0}));
+  EXPECT_EQ(d.motor_position.values, (std::vector<double>{10, 20, 30, 40}));
+  EXPECT_EQ(d.pwm.values, (std::vector<double>{33, 34, 35, 36}));
+  EXPECT_EQ(d.current.values, (std::vector<double>{3300, 3400, 3500, 3600}));
+  const auto pos = static_cast<std::int32_t>(vocab("pos"));
+  EXPECT_EQ(d.control_mode.values, (std::vector<std::int32_t>{pos, pos, pos, pos}));
+  EXPECT_TRUE(d.interaction_mode.valid);
+}
+
+TEST(JointDataDecode, ReadsBackWhatTheEncoderWritesFlagsIncluded) {
+  PolyDriver device(Property::from_command_line({"--device", "test_motor", "--axes", "2", "--clock", "manual"}));
+  DeviceDriver* driver = nullptr;
+  IEncoders* enc = nullptr;
+  IVelocityControl* vel = nullptr;
+  ISimulationClock* clock = nullptr;
+  ASSERT_TRUE(device.view(driver) && device.view(enc) && device.view(vel) && device.view(clock));
+  ASSERT_TRUE(enc->setEncoders({10.0, -20.0}));
+  ASSERT_TRUE(vel->velocityMove(1, 5.0));
+  ASSERT_TRUE(clock->advance(0.05));  // mid-ramp: speed 2.5 deg/s, acceleration 50 deg/s^2
+  Bottle message;
+  ASSERT_TRUE(encode_joint_data(*driver, message));
+  const JointData d = decode_joint_data(message);
+  std::vector<double> pos, speeds, accs;
+  ASSERT_TRUE(enc->getEncoders(pos) && enc->getEncoderSpeeds(speeds) && enc->getEncoderAccelerations(accs));
+  EXPECT_EQ(d.position.values, pos);
+  EXPECT_EQ(d.velocity.values, speeds);
+  EXPECT_EQ(d.acceleration.values, accs);
+  EXPECT_NEAR(speeds[1], 2.5, 1e-9);
+  EXPECT_TRUE(d.position.valid && d.velocity.valid && d.acceleration.valid && d.torque.valid);
+  EXPECT_FALSE(d.motor_position.valid || d.pwm.valid || d.current.valid || d.interaction_mode.valid);
+  EXPECT_EQ(d.control_mode.values, (std::vector<std::int32_t>{static_cast<std::int32_t>(ControlMode::position),
+                                                              static_cast<std::int32_t>(ControlMode::velocity)}));
+}
+
+TEST(JointDataDecode, MalformedMessagesNameTheItemAndTheField) {
+  EXPECT_EQ(error_of("(1.0) [ok]"), "jointData has 2 items, expected 22 (11 fields, each followed by [ok] or [fail])");
+  EXPECT_EQ(error_of(two_axes_with(0, "5.0 [ok]")), "jointData item 0 (jointPosition): expected a list of values, got 5.0");
+  EXPECT_EQ(error_of(two_axes_with(1, "(1.0 \"x y\") [ok]")),
+            "jointData item 2 (jointVelocity): value 1 is not a number: \"x y\"");
+  EXPECT_EQ(error_of(two_axes_with(6, "(1.0 2.0) [yes]")),
+            "jointData item 13 (torque): expected the flag [ok] or [fail], got [yes]");
+  EXPECT_EQ(error_of(two_axes_with(9, "(0 1.5) [ok]")),
+            "jointData item 18 (controlMode): value 1 is not an integer or a vocab: 1.5");
+  EXPECT_EQ(error_of(two_axes_with(2, "(1.0 2.0 3.0) [ok]")),
+            "jointData item 4 (jointAcceleration): has 3 values, but jointPosition has 2");
+  // A field flagged [fail] is read with its flag, not refused.
+  const JointData d = decode_joint_data(Bottle::from_text(two_axes_with(1, "(0.0 0.0) [fail]")));
+  EXPECT_FALSE(d.velocity.valid);
+  EXPECT_TRUE(d.position.valid);
+  EXPECT_EQ(d.position.values, (std::vector<double>{1.5, 2.5}));
+}
