@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include "captured_joint_data.hpp"
+
 #include "robogene/dev/generated/interfaces.hpp"
 #include "robogene/dev/joint_data.hpp"
 #include "robogene/dev/poly_driver.hpp"
@@ -21,21 +23,6 @@ std::string hex(const std::vector<std::uint8_t>& bytes) {
   return out;
 }
 
-// One stateExt:o message of a YARP 3 fakeMotionControl with 4 axes (reference capture
-// sniff_stateExt.txt): joint positions 1-4, motor positions 10-40, PWM 33-36, currents 3300-3600,
-// all modes [pos], every field valid.
-const char* kCaptured =
-    "00010000160000000a01000004000000000000000000f03f000000000000004000000000000008400000000000001040"
-    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
-    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
-    "090000006f6b00000a01000004000000000000000000244000000000000034400000000000003e400000000000004440"
-    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
-    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
-    "090000006f6b00000a010000040000000000000000000000000000000000000000000000000000000000000000000000"
-    "090000006f6b00000a010000040000000000000000804040000000000000414000000000008041400000000000004240"
-    "090000006f6b00000a010000040000000000000000c8a940000000000090aa40000000000058ab40000000000020ac40"
-    "090000006f6b00000101000004000000706f7300706f7300706f7300706f7300090000006f6b00000101000004000000"
-    "00000000000000000000000000000000090000006f6b0000";
 
 }  // namespace
 
@@ -50,7 +37,7 @@ TEST(JointData, LayoutMatchesYarpsAndFieldsTestMotorLacksAreInvalid) {
   ASSERT_EQ(message.size(), 22u);
   // The capture with test_motor's differences: no motor encoders, PWM, current or interaction
   // mode, so those are zeros flagged [fail] (09000000 6661696c); its torques are zero, at rest.
-  std::string expected = kCaptured;
+  std::string expected = test::kCapturedJointData;
   auto replace_field = [&](std::size_t field, const std::string& values) {
     // Each float64 field is 8 + 32 bytes of vector then 8 bytes of flag; find it by walking.
     const Bottle captured = Bottle::from_bytes([&] {

@@ -21,7 +21,7 @@ from .. import Bottle, BufferedPort, Error, Network, Port, RpcClient, RpcServer
 from .device_driver import DeviceDriver
 from .generated.clients import GrabberClient
 from .image import ImageRgb
-from .network import _network, _port_name
+from .network import _call_or_empty, _network, _port_name
 from .property import ConfigError, Property
 from .rpc import ImageError, decode_image
 from .rpc import RpcServer as Dispatch
@@ -123,15 +123,7 @@ class RemoteGrabber(GrabberClient, DeviceDriver):
         self.last_error = ""
 
     def _call(self, request: Bottle) -> Bottle:
-        # A failed exchange is an empty reply: the method then returns None/False, as in C++.
-        client = self._client
-        if client is None:
-            return Bottle()
-        try:
-            return client.call(request)
-        except Error as exc:
-            _log.warning("%s/rpc_client: request to %s/rpc failed: %s", self._local, self._remote, exc)
-            return Bottle()
+        return _call_or_empty(self._client, request, f"{self._local}/rpc_client: request to {self._remote}/rpc")
 
     def _received(self, message: Bottle, info) -> None:
         with self._arrived:

@@ -13,11 +13,12 @@ devices (docs/devices.md, "On the network").
 """
 from __future__ import annotations
 
+import logging
 import threading
 import time
 from typing import Any, List, Optional
 
-from .. import Bottle, BufferedPort, Network, Port, RpcServer, Value
+from .. import Bottle, BufferedPort, Error, Network, Port, RpcServer, Value
 from .property import ConfigError, Property
 from .rpc import RpcServer as Dispatch
 
@@ -33,6 +34,18 @@ def _port_name(config: Property, key: str) -> str:
         raise ConfigError(f"{config.origin(key) or config.source()}: key '{key}': {name!r} is not a port "
                           "name (it must start with '/' and have no spaces)")
     return name
+
+
+def _call_or_empty(client: Any, request: Bottle, what: str) -> Bottle:
+    """One request of a remote device's generated client. A failed exchange is an empty reply (the
+    method then returns None/False, as in C++), logged with `what` (ports and peer)."""
+    if client is None:
+        return Bottle()
+    try:
+        return client.call(request)
+    except Error as exc:
+        logging.getLogger("robogene.dev").warning("%s failed: %s", what, exc)
+        return Bottle()
 
 
 def encode_joint_data(device: Any) -> Optional[Bottle]:

@@ -24,7 +24,7 @@ from .. import Bottle, BufferedPort, Error, JointData, Network, Port, RpcClient,
 from .device_driver import DeviceDriver
 from .generated.clients import ControlboardClient
 from .property import ConfigError, Property
-from .network import _network, _port_name
+from .network import _call_or_empty, _network, _port_name
 
 _log = logging.getLogger("robogene.dev")
 
@@ -57,15 +57,7 @@ class RemoteControlboard(ControlboardClient, DeviceDriver):
         self._warned = False
 
     def _call(self, request: Bottle) -> Bottle:
-        # A failed exchange is an empty reply: the method then returns None/False, as in C++.
-        client = self._client
-        if client is None:
-            return Bottle()
-        try:
-            return client.call(request)
-        except Error as exc:
-            _log.warning("%s/rpc:o: request to %s/rpc:i failed: %s", self._local, self._remote, exc)
-            return Bottle()
+        return _call_or_empty(self._client, request, f"{self._local}/rpc:o: request to {self._remote}/rpc:i")
 
     def open(self, config: Property) -> bool:
         self.close()
