@@ -1,6 +1,7 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """The drawing's plan, without FreeCAD: which dimensions a view gets, and where the views go on the sheet."""
+import re
 import sys
 
 import pytest
@@ -9,6 +10,7 @@ from conftest import REPO
 
 sys.path.insert(0, str(REPO / "hardware" / "mechanics" / "freecad"))
 import dimension_plan as dp  # noqa: E402
+import line_overlay as lo  # noqa: E402
 import sheet_layout as sl  # noqa: E402
 
 
@@ -134,3 +136,29 @@ def test_a_part_too_big_for_a3_is_refused():
 
 def test_scale_labels():
     assert [sl.scale_label(s) for s in (5.0, 1.0, 0.5, 0.2)] == ["5:1", "1:1", "1:2", "1:5"]
+
+
+def test_the_line_overlay_maps_page_millimetres_exactly_and_dashes_hidden_lines():
+    """TechDraw sizes a symbol in whole pixels at 3.78 px/mm: the overlay's view box must span exactly what its
+    pixel size covers, centred on the view, so its lines fall on TechDraw's; hidden lines are dashed, and every
+    width is at least one SVG unit (Qt's SVG writer misscales the dashes of thinner lines)."""
+    visible = [[(-30.0, -5.0), (30.0, -5.0), (30.0, 5.0)]]
+    hidden = [[(10.0, 2.0), (12.0, 2.0)]]
+    svg = lo.svg(visible, hidden)
+    width, height = (int(v) for v in re.search(r'width="(\d+)" height="(\d+)"', svg).groups())
+    x, y, w, h = (float(v) for v in re.search(r'viewBox="([^"]+)"', svg).group(1).split())
+    assert w == pytest.approx(width / lo.PX_PER_MM * lo.UNITS, abs=1e-3)
+    assert h == pytest.approx(height / lo.PX_PER_MM * lo.UNITS, abs=1e-3)
+    assert (x, y) == pytest.approx((-w / 2, -h / 2), abs=1e-3)
+    assert w / lo.UNITS >= 60 and h / lo.UNITS >= 10            # the whole view fits
+    paths = re.findall(r"<path ([^>]*)/>", svg)
+    dashed = [p for p in paths if "stroke-dasharray" in p]
+    solid = [p for p in paths if "stroke-dasharray" not in p]
+    assert len(dashed) == 1 and "M1000.0,200.0 L1200.0,200.0" in dashed[0]
+    assert len(solid) == 1 and "M-3000.0,-500.0 L3000.0,-500.0 L3000.0,500.0" in solid[0]
+    for p in paths:
+        assert float(re.search(r'stroke-width="([\d.]+)"', p).group(1)) >= 1
+    dash, gap = (float(v) / lo.UNITS for v in re.search(r'stroke-dasharray="([^"]+)"', dashed[0]).group(1).split(","))
+    assert 1.0 <= dash <= 4.0 and gap >= 0.3
+    with pytest.raises(ValueError):
+        lo.svg([], [])

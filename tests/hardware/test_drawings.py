@@ -4,6 +4,7 @@
 right: checked against the STEP files read independently (CadQuery/OpenCASCADE), and on a test part
 whose dimensions are known."""
 import json
+import math
 import re
 import subprocess
 from pathlib import Path
@@ -17,6 +18,7 @@ from OCP.BRepLProp import BRepLProp_SLProps
 from OCP.GeomAbs import GeomAbs_Cylinder
 from OCP.TopAbs import TopAbs_REVERSED
 
+from drawing_svg import circle_of, ring_gaps, strokes
 from robogene_head import freecad
 
 NUMBER = re.compile(r"(?<![\d.])\d+(?:\.\d+)?")
@@ -132,12 +134,21 @@ def test_the_title_block_and_notes_are_filled(fab, machined, params):
             assert field in text, (name, field)
 
 
+# The hidden-hole block: 40 x 30 x 10, three blind holes that each open away from the view along their axis.
+# (diameter, depth, mouth on the block's face, axis pointing into the block, view that sees it from behind)
+HIDDEN_HOLES = ((4.0, 6.0, (12, 30, 5), (0, -1, 0), "front"),     # opens towards +Y
+                (5.0, 4.0, (28, 15, 0), (0, 0, 1), "top"),        # opens towards -Z
+                (3.0, 5.0, (0, 10, 5), (1, 0, 0), "left"))        # opens towards -X: seen from -X, visible
+HIDDEN_BLOCK = (40, 30, 10)
+
+
 @pytest.fixture(scope="module")
 def known_parts(tmp_path_factory):
-    """Two parts of known size drawn in one FreeCAD session:
+    """Three parts of known size drawn in one FreeCAD session:
     - a 60 x 40 x 12 block with Ø6.6 and Ø4.5 holes through its top and a Ø3 hole through its front;
     - a 50 x 16 x 6 slot-shaped plate (round ends, so no vertex at its left and right extremes) with a
-      Ø5 hole in the middle."""
+      Ø5 hole in the middle;
+    - the hidden-hole block (HIDDEN_HOLES)."""
     folder = tmp_path_factory.mktemp("known")
     block = cq.Solid.makeBox(60, 40, 12)
     for d, at, axis, length in ((6.6, (10, 8, 0), (0, 0, 1), 12), (4.5, (45, 30, 0), (0, 0, 1), 12),
@@ -146,8 +157,12 @@ def known_parts(tmp_path_factory):
     cq.exporters.export(cq.Workplane().add(block), str(folder / "test_block.step"))
     slot = cq.Workplane("XY").slot2D(50, 16).extrude(6).faces(">Z").workplane().hole(5)
     cq.exporters.export(slot, str(folder / "test_slot.step"))
+    hidden = cq.Solid.makeBox(*HIDDEN_BLOCK)
+    for d, depth, at, axis, _ in HIDDEN_HOLES:
+        hidden = hidden.cut(cq.Solid.makeCylinder(d / 2, depth, cq.Vector(*at), cq.Vector(*axis)))
+    cq.exporters.export(cq.Workplane().add(hidden), str(folder / "test_hidden.step"))
     data = freecad.draw([freecad.DrawingJob(n, folder / f"{n}.step", "aluminium-6082", 2700.0)
-                         for n in ("test_block", "test_slot")], folder / "drawings")
+                         for n in ("test_block", "test_slot", "test_hidden")], folder / "drawings")
     return {d["name"]: d for d in data["drawings"]}, folder / "drawings"
 
 
@@ -186,6 +201,37 @@ def test_an_extreme_on_a_curve_is_dimensioned_to_the_curve(known_parts):
         ("top", "diameter", "Diameter", 5),
     }
     assert missing([50, 16, 6, 25, 8], numbers(pdf_text(folder / "test_slot.pdf")), tol=1e-9) == []
+
+
+# model axis -> (view, sign) of the view's across and up directions: front looks from -Y, left from -X, top from +Z
+VIEW_AXES = {"front": ((0, 1), (2, 1)), "left": ((1, -1), (2, 1)), "top": ((0, 1), (1, 1))}
+
+
+def test_a_hole_that_opens_away_from_the_view_is_drawn_dashed(known_parts):
+    """A blind hole seen from behind is a dashed circle at its place in the view along its axis: in the SVG a
+    path drawn with a dash of 1 to 4 mm and a gap of at least 0.3 mm (ISO 128-20 proportions for a narrow
+    line), and in the PDF a ring with gaps in the ink. A visible hole is a solid circle."""
+    drawings, folder = known_parts
+    entry = drawings["test_hidden"]
+    svg = (folder / "test_hidden.svg").read_text()
+    page_height = 210.0 if entry["sheet"] == "A4" else 297.0
+    lines = strokes(svg)
+    dashed = [s for s in lines if s.dash]
+    assert dashed and all(1.0 <= s.dash[0] <= 4.0 and s.dash[1] >= 0.3 for s in dashed), [s.dash for s in dashed]
+    scale = entry["scale"]
+    for d, depth, at, axis, view in HIDDEN_HOLES:
+        (ia, sa), (ib, sb) = VIEW_AXES[view]
+        cx, cy = entry["views"][view]
+        # TechDraw centres a view on the part's box; page y runs down
+        want = (cx + sa * (at[ia] - HIDDEN_BLOCK[ia] / 2) * scale,
+                page_height - cy - sb * (at[ib] - HIDDEN_BLOCK[ib] / 2) * scale)
+        found = {bool(s.dash) for s in lines for line in s.lines
+                 if (c := circle_of(line)) and math.dist(c[:2], want) < 0.05 and abs(c[2] - d / 2 * scale) < 0.05}
+        hidden = view != "left"
+        assert hidden in found, (view, d, want, found)
+        inked, gaps = ring_gaps(folder / "test_hidden.pdf", want, d / 2 * scale)
+        assert inked > 0.5, (view, d, inked)
+        assert (gaps >= 2) if hidden else (gaps == 0), (view, d, gaps)
 
 
 def test_a_missing_step_is_reported_by_name(tmp_path):

@@ -11,6 +11,7 @@ import FreeCAD
 import Part
 
 import dimension_plan
+import line_overlay
 import sheet_layout
 import view_geometry
 
@@ -57,12 +58,15 @@ def _settle(objects) -> None:
 
 
 def _first_angle_symbol() -> str:
-    """ISO 5456-2 first-angle projection symbol: the truncated cone, its view from the left drawn right."""
-    return ('<svg xmlns="http://www.w3.org/2000/svg" width="26mm" height="12mm" viewBox="0 0 26 12">'
-            '<g fill="none" stroke="#000" stroke-width="0.35">'
-            '<path d="M1,4 L11,1 L11,11 L1,8 Z"/><circle cx="20" cy="6" r="5"/><circle cx="20" cy="6" r="2"/>'
-            '</g><g fill="none" stroke="#000" stroke-width="0.18" stroke-dasharray="3,1,0.5,1">'
-            '<path d="M0,6 H12.5 M13.5,6 H26.5 M20,0 V12"/></g></svg>')
+    """ISO 5456-2 first-angle projection symbol: the truncated cone, its view from the left drawn right. Drawn in
+    0.1 mm units, so that every line width is at least one unit (Qt's SVG writer misscales the dashes of thinner
+    lines), and sized in whole pixels at TechDraw's 3.78 px/mm (line_overlay)."""
+    px = line_overlay.PX_PER_MM
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{round(26 * px)}" height="{round(12 * px)}" '
+            'viewBox="0 0 260 120"><g fill="none" stroke="#000" stroke-width="3.5">'
+            '<path d="M10,40 L110,10 L110,110 L10,80 Z"/><circle cx="200" cy="60" r="50"/>'
+            '<circle cx="200" cy="60" r="20"/></g><g fill="none" stroke="#000" stroke-width="1.8" '
+            'stroke-dasharray="30,10,5,10"><path d="M0,60 H125 M135,60 H265 M200,0 V120"/></g></svg>')
 
 
 class PartPage:
@@ -89,8 +93,8 @@ class PartPage:
             v.XDirection = FreeCAD.Vector(*xdir)
             v.ScaleType = "Custom"
             v.Scale = 1.0
-            # Hidden lines stay off: FreeCAD 0.20 exports them with a 0.4 mm dash that prints as a solid line.
-            v.HardHidden = False
+            # Hidden lines in the principal views (drawn dashed by line_overlay); an isometric view shows none.
+            v.HardHidden = name in PRINCIPAL
             if name in PRINCIPAL and v.ViewObject is not None:
                 v.ViewObject.ArcCenterMarks = True
             self.views[name] = v
@@ -227,6 +231,23 @@ class PartPage:
         self.notes = notes
         self.doc.recompute()
         _settle([notes, symbol])
+
+    def draw_lines(self) -> None:
+        """Each view's lines at their ISO widths and dash (line_overlay), over TechDraw's hairlines."""
+        symbols = []
+        for name, v in self.views.items():
+            symbol = self.doc.addObject("TechDraw::DrawViewSymbol", f"Lines{name.capitalize()}")
+            symbol.Symbol = line_overlay.svg(view_geometry.polylines(v.getVisibleEdges()),
+                                             view_geometry.polylines(v.getHiddenEdges() if v.HardHidden else []))
+            self.page.addView(symbol)
+            symbol.X, symbol.Y = v.X, v.Y
+            symbols.append(symbol)
+        self.doc.recompute()
+        _settle(symbols)
+
+    def view_centres(self) -> dict:
+        """Page mm (y up) of each view's centre, for the report."""
+        return {name: [round(float(v.X), 4), round(float(v.Y), 4)] for name, v in self.views.items()}
 
     def export(self) -> None:
         import TechDrawGui

@@ -14,6 +14,7 @@ import Part
 from dimension_plan import Circle, Extreme
 
 FAR = 1.0e4
+DEFLECTION = 0.01   # page mm: how far a drawn polyline may stray from its curve
 
 
 def _indexed(getter):
@@ -84,4 +85,13 @@ def extremes(visible) -> dict:
         dist, point = best
         coord = a[axis] + sign * dist
         out[side] = Extreme(coord, (point.x, point.y))
+    return out
+
+
+def polylines(shown) -> list:
+    """Edges as getVisibleEdges/getHiddenEdges report them (page mm, y down) as polylines for line_overlay."""
+    out = []
+    for e in shown:
+        points = e.discretize(Deflection=DEFLECTION)
+        out.append([(p.x, p.y) for p in points])
     return out
