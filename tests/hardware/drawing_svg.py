@@ -101,3 +101,38 @@ def ring_gaps(pdf: Path, centre: tuple, radius: float, dpi: int = 600) -> tuple:
             run += 1
     gaps += run * arc >= 0.25
     return sum(inked) / steps, gaps
+
+
+@dataclass
+class Label:
+    text: str
+    x: float              # baseline start, template mm, y down
+    y: float
+    size: float           # text height, mm
+
+
+def title_block(svg: str) -> tuple:
+    """The title block as the page carries it: its lines (x0, y0, x1, y1) and its texts, in template mm."""
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    root = ET.fromstring(svg.encode())
+    lines = []
+    structure = root.find(f".//{ns}g[@id='titleblock-structure']")
+    for el in structure:
+        if el.tag == ns + "rect":
+            x, y, w, h = (float(el.get(k)) for k in ("x", "y", "width", "height"))
+            lines += [(x, y, x + w, y), (x, y + h, x + w, y + h), (x, y, x, y + h), (x + w, y, x + w, y + h)]
+        elif el.tag == ns + "path":
+            x, y, kind, d = re.fullmatch(r"m ([\d.]+),([\d.]+) ([hv]) ([\d.]+)", el.get("d")).groups()
+            x, y, d = float(x), float(y), float(d)
+            lines.append((x, y, x + d, y) if kind == "h" else (x, y, x, y + d))
+    texts = []
+    for group_id in ("titleblock-text-non-editable", "titleblock-text-editable"):
+        group = root.find(f".//{ns}g[@id='{group_id}']")
+        default = float(re.search(r"font-size:([\d.]+)px", group.get("style")).group(1))
+        for el in group.iter(ns + "text"):
+            text = "".join(el.itertext()).strip()
+            m = re.search(r"font-size:([\d.]+)px", el.get("style", ""))
+            if text:
+                texts.append(Label(text, float(el.get("x")), float(el.get("y")), float(m.group(1)) if m else default))
+    return lines, texts

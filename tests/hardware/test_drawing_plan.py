@@ -12,6 +12,7 @@ sys.path.insert(0, str(REPO / "hardware" / "mechanics" / "freecad"))
 import dimension_plan as dp  # noqa: E402
 import line_overlay as lo  # noqa: E402
 import sheet_layout as sl  # noqa: E402
+import title_block as tb  # noqa: E402
 
 
 def rectangle_with_holes():
@@ -162,3 +163,31 @@ def test_the_line_overlay_maps_page_millimetres_exactly_and_dashes_hidden_lines(
     assert 1.0 <= dash <= 4.0 and gap >= 0.3
     with pytest.raises(ValueError):
         lo.svg([], [])
+
+
+TEMPLATE = """<svg xmlns="http://www.w3.org/2000/svg" xmlns:freecad="http://www.freecadweb.org/wiki/index.php?title=Svg_Namespace">
+<g id="titleblock-structure"><rect x="150" y="169" width="140" height="34"/><path d="m 237,169 v 30"/>
+<path d="m 237,185 h 53"/></g>
+<g id="titleblock-text-non-editable" style="font-size:3px"><text id="l1" x="238" y="184">Part number:</text>
+<text id="l2" x="151" y="172">TITLE:</text></g>
+<g id="titleblock-text-editable" style="font-size:3px">
+<text id="v1" x="257" y="184" freecad:editable="PN"><tspan>PN</tspan></text>
+<text id="v2" x="152" y="185" style="fill:#000" freecad:editable="TITLE"><tspan>x</tspan></text></g></svg>"""
+
+
+def test_title_block_texts_shrink_to_their_cells():
+    """A value too long for its cell gets the largest size that fits (estimated conservatively); a short one
+    keeps the template's; labels all get the tightest label's size; a text that would need less than 1.8 mm
+    is refused."""
+    sizes = tb.sizes(TEMPLATE, {"PN": "motor_mount_neck_pitch", "TITLE": "short"})
+    assert sizes["v1"] == pytest.approx((290 - tb.GAP - 257) / (tb.EM * 22))
+    assert sizes["v2"] == 3.0
+    # "Part number:" ends before the value at x = 257; "TITLE:" has the whole cell, but follows it
+    assert sizes["l1"] == sizes["l2"] == pytest.approx((257 - tb.GAP - 238) / (tb.EM * 12))
+    # a renderer's measured width counts when it is the wider
+    assert tb.sizes(TEMPLATE, {"PN": "abc", "TITLE": "x"}, measure=lambda t: 12.0 if t == "abc" else 0.0)["v1"] == pytest.approx(32.5 / 12)
+    fitted = tb.fitted(TEMPLATE, {"PN": "motor_mount_neck_pitch", "TITLE": "x" * 60})
+    assert re.search(r'<text style="font-size:2\.\d+px" id="v1"', fitted)
+    assert re.search(r'id="v2" x="152" y="185" style="fill:#000;font-size:[\d.]+px"', fitted)     # merged into its own style
+    with pytest.raises(tb.TitleBlockError, match="PN"):
+        tb.sizes(TEMPLATE, {"PN": "x" * 40, "TITLE": "x"})

@@ -18,7 +18,7 @@ from OCP.BRepLProp import BRepLProp_SLProps
 from OCP.GeomAbs import GeomAbs_Cylinder
 from OCP.TopAbs import TopAbs_REVERSED
 
-from drawing_svg import circle_of, ring_gaps, strokes
+from drawing_svg import circle_of, ring_gaps, strokes, title_block
 from robogene_head import freecad
 
 NUMBER = re.compile(r"(?<![\d.])\d+(?:\.\d+)?")
@@ -140,6 +140,45 @@ HIDDEN_HOLES = ((4.0, 6.0, (12, 30, 5), (0, -1, 0), "front"),     # opens toward
                 (5.0, 4.0, (28, 15, 0), (0, 0, 1), "top"),        # opens towards -Z
                 (3.0, 5.0, (0, 10, 5), (1, 0, 0), "left"))        # opens towards -X: seen from -X, visible
 HIDDEN_BLOCK = (40, 30, 10)
+
+
+# A character is taken as 0.6 text heights wide: more than the sans FreeCAD falls back to for Tahoma (DejaVu
+# Sans, 0.49 to 0.59 on these texts) and than Tahoma itself.
+CHAR_WIDTH = 0.6
+
+
+def text_boxes_outside_their_cells(svg: str) -> list:
+    """Title-block texts whose box (estimated width, one text height high) leaves the cell it starts in, or
+    overlaps another text."""
+    lines, texts = title_block(svg)
+    vertical = [(x0, min(y0, y1), max(y0, y1)) for x0, y0, x1, y1 in lines if x0 == x1]
+    horizontal = [(y0, min(x0, x1), max(x0, x1)) for x0, y0, x1, y1 in lines if y0 == y1]
+    bad = []
+    boxes = []
+    for t in texts:
+        box = (t.x, t.y - t.size, t.x + CHAR_WIDTH * t.size * len(t.text), t.y)
+        right = min(x for x, a, b in vertical if x > t.x and a < t.y < b + 1e-9)
+        top = max(y for y, a, b in horizontal if y < t.y and a <= t.x <= b)
+        bottom = min(y for y, a, b in horizontal if y >= t.y and a <= t.x <= b)
+        if box[2] > right or box[1] < top or box[3] > bottom:
+            bad.append((t.text, round(t.size, 2), round(box[2], 1), right))
+        boxes.append((t, box))
+    for i, (t, a) in enumerate(boxes):
+        for u, b in boxes[i + 1:]:
+            if a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]:
+                bad.append((t.text, u.text))
+    return bad
+
+
+def test_every_title_block_text_fits_its_cell(fab, machined, known_parts):
+    """The part name in the "Part number" cell, the licence line, every label and value: each inside the cell it
+    starts in and clear of the others, at the size the page gives it."""
+    _, folder = known_parts
+    pages = [fab / "drawings" / f"{name}.svg" for name in machined] + sorted(folder.glob("*.svg"))
+    for page in pages:
+        assert text_boxes_outside_their_cells(page.read_text()) == [], page.name
+    # a longer name than any part's is still fitted, not left to overflow
+    assert any(len(name) >= 21 for name in machined)
 
 
 @pytest.fixture(scope="module")

@@ -18,6 +18,7 @@ def draw_one(entry: dict) -> dict:
     import FreeCAD
     import techdraw_page
     doc = FreeCAD.newDocument("Drawing")
+    page = None
     try:
         page = techdraw_page.PartPage(doc, entry)
         layout = page.layout()
@@ -29,6 +30,8 @@ def draw_one(entry: dict) -> dict:
                 "sheet": layout.sheet.name, "scale": layout.scale, "views": page.view_centres(), "dimensions": dims}
     finally:
         FreeCAD.closeDocument(doc.Name)
+        if page is not None:
+            page.close()
 
 
 def main() -> int:

@@ -5,6 +5,8 @@ notes. Runs inside FreeCAD (draw_parts.py drives it); TechDraw only exports page
 from __future__ import annotations
 
 import os
+import shutil
+import tempfile
 import time
 
 import FreeCAD
@@ -13,6 +15,7 @@ import Part
 import dimension_plan
 import line_overlay
 import sheet_layout
+import title_block
 import view_geometry
 
 # name, direction towards the viewer, drawing's right (XDirection), model axes shown across and up
@@ -69,6 +72,15 @@ def _first_angle_symbol() -> str:
             'stroke-dasharray="30,10,5,10"><path d="M0,60 H125 M135,60 H265 M200,0 V120"/></g></svg>')
 
 
+def _text_width(text: str) -> float:
+    """Width of a title-block text in text heights, in the font Qt draws the template with (its Tahoma, or the
+    font that stands in for it)."""
+    from PySide2 import QtGui
+    font = QtGui.QFont("tahoma")
+    font.setPixelSize(1000)
+    return QtGui.QFontMetricsF(font).horizontalAdvance(text) / 1000
+
+
 class PartPage:
     def __init__(self, doc, entry: dict):
         self.doc = doc
@@ -99,6 +111,7 @@ class PartPage:
                 v.ViewObject.ArcCenterMarks = True
             self.views[name] = v
         self.dimensions = []
+        self.scratch = tempfile.mkdtemp(prefix="robogene-drawing-")   # the page's fitted template
 
     def _measure(self):
         """Per principal view: vertices, the dimension plan and the view's extremes."""
@@ -198,8 +211,7 @@ class PartPage:
 
     def annotate(self, layout: sheet_layout.Layout) -> None:
         e = self.entry
-        texts = self.template.EditableTexts
-        texts.update({
+        values = {
             "AUTHOR_NAME": "Robogene contributors", "APPROVER_NAME": "-", "OWNER_NAME": "Robogene contributors",
             "TITLELINE-1": "Robogene head", "TITLELINE-2": e["name"],
             "TITLELINE-3": f"source: {e['source']}",
@@ -208,7 +220,21 @@ class PartPage:
             "PM": e["material"] or "-", "PN": e["name"], "DN": "-",
             "DATE": "-", "REVISION": e["revision"], "SIZE": layout.sheet.name,
             "RIGHTS": f"Licence {e['licence']} | units mm | reference geometry: {e['source']}",
-        })
+        }
+        # FreeCAD's template with each text sized to its cell (title_block); setting the template resets the
+        # editable texts, so they come after.
+        with open(os.path.join(templates_dir(), layout.sheet.template), encoding="utf-8") as fh:
+            original = fh.read()
+        try:
+            fitted = title_block.fitted(original, values, _text_width)
+        except title_block.TitleBlockError as exc:
+            raise DrawingError(f"{e['name']}: {exc}") from None
+        path = os.path.join(self.scratch, layout.sheet.template)
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(fitted)
+        self.template.Template = path
+        texts = self.template.EditableTexts
+        texts.update(values)
         self.template.EditableTexts = texts
         x0, y0, x1, y1 = layout.notes
         symbol = self.doc.addObject("TechDraw::DrawViewSymbol", "ProjectionSymbol")
@@ -248,6 +274,9 @@ class PartPage:
     def view_centres(self) -> dict:
         """Page mm (y up) of each view's centre, for the report."""
         return {name: [round(float(v.X), 4), round(float(v.Y), 4)] for name, v in self.views.items()}
+
+    def close(self) -> None:
+        shutil.rmtree(self.scratch, ignore_errors=True)
 
     def export(self) -> None:
         import TechDrawGui

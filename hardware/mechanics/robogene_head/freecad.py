@@ -20,7 +20,7 @@ FREECAD_DIR = Path(__file__).resolve().parents[1] / "freecad"
 CHECK_SCRIPT = FREECAD_DIR / "step_check.py"
 DRAW_SCRIPT = FREECAD_DIR / "draw_parts.py"
 DRAW_MODULES = ("draw_parts.py", "techdraw_page.py", "view_geometry.py", "dimension_plan.py", "sheet_layout.py",
-                "line_overlay.py")
+                "line_overlay.py", "title_block.py")
 LICENCE = "CERN-OHL-S-2.0"
 INSTALL_HINT = "install the packages in tools/setup/apt/hardware.txt"
 
