@@ -10,7 +10,10 @@ from conftest import REPO
 
 sys.path.insert(0, str(REPO / "hardware" / "mechanics" / "freecad"))
 import dimension_plan as dp  # noqa: E402
+import hole_callouts as hc  # noqa: E402
+import hole_features as hf  # noqa: E402
 import line_overlay as lo  # noqa: E402
+import notes_block as nb  # noqa: E402
 import sheet_layout as sl  # noqa: E402
 import title_block as tb  # noqa: E402
 
@@ -111,7 +114,7 @@ def boxes_for(x, y, z):
     ((11.5, 11.5, 6), "A4", 5.0),        # a small pulley: enlarged on A4
     ((44, 12, 62.5), "A4", 1.0),         # an upright: full size on A4
     ((130, 110, 8), "A3", 1.0),          # a base plate: A4 would need 1:2, A3 takes it full size
-    ((400, 300, 300), "A3", 0.2),        # too big for A3 at 1:2
+    ((400, 300, 300), "A4", 0.2),        # too big for A3 at 1:2; at 1:5 A4 takes it, its isometric view at 1:10
 ])
 def test_sheet_and_scale_follow_the_part_size(size, sheet, scale):
     layout = sl.choose(boxes_for(*size))
@@ -128,6 +131,23 @@ def test_sheet_and_scale_follow_the_part_size(size, sheet, scale):
     # first-angle arrangement: the left view right of the front, the top view below it, both aligned
     (fx, fy), (lx, ly), (tx, ty) = (layout.centres[v] for v in ("front", "left", "top"))
     assert lx > fx and ly == fy and tx == fx and ty < fy
+
+
+def test_the_isometric_view_shrinks_rather_than_the_principal_views():
+    """A side plate's views fit A3 at 1:1 but leave no corner for its isometric view at 1:1: that one is drawn at
+    1:2 rather than every view at 1:2; never more than two standard scales smaller."""
+    boxes = {"front": sl.ViewBox(-74, 74, -56, 56, left=75, below=75, above=14.7),
+             "left": sl.ViewBox(-3, 3, -56, 56, left=30, below=21, right=15.5),
+             "top": sl.ViewBox(-74, 74, -3, 3, left=21, below=30, above=15.5),
+             "iso": sl.ViewBox(-54.5, 54.5, -77.2, 77.2)}
+    layout = sl.choose(boxes)
+    assert (layout.sheet.name, layout.scale, layout.iso_scale) == ("A3", 1.0, 0.5)
+    x0, y0, x1, y1 = layout.boxes["iso"]
+    il, ir, ib, ia = boxes["iso"].extents(0.5)
+    assert (x1 - x0, y1 - y0) == pytest.approx((il + ir, ib + ia))
+    for size in [(11.5, 11.5, 6), (44, 12, 62.5), (130, 110, 8), (400, 300, 300)]:
+        layout = sl.choose(boxes_for(*size))
+        assert layout.iso_scale in sl.SCALES[sl.SCALES.index(layout.scale):sl.SCALES.index(layout.scale) + 3]
 
 
 def test_a_part_too_big_for_a3_is_refused():
@@ -191,3 +211,87 @@ def test_title_block_texts_shrink_to_their_cells():
     assert re.search(r'id="v2" x="152" y="185" style="fill:#000;font-size:[\d.]+px"', fitted)     # merged into its own style
     with pytest.raises(tb.TitleBlockError, match="PN"):
         tb.sizes(TEMPLATE, {"PN": "x" * 40, "TITLE": "x"})
+
+
+def block_with_holes():
+    """A 60 x 40 x 10 block (z 0..10): a Ø5 hole 6 deep from the top at (10, 10); a Ø2.2 hole through at (30, 20)
+    counterbored Ø4.4 x 2 from below; two Ø3 holes 8 deep from the bottom at (50, 10) and (50, 30); a closed Ø2
+    cavity at (5, 35), z 4..6. Returns the cylinder segments and the block's material test."""
+    segments = [hf.Segment(2, 10, 10, 5.0, 4.0, 10.0), hf.Segment(2, 30, 20, 4.4, 0.0, 2.0),
+                hf.Segment(2, 30, 20, 2.2, 2.0, 10.0), hf.Segment(2, 50, 10, 3.0, 0.0, 8.0),
+                hf.Segment(2, 50, 30, 3.0, 0.0, 8.0), hf.Segment(2, 5, 35, 2.0, 4.0, 6.0)]
+
+    def inside(x, y, z):
+        if not (0 <= x <= 60 and 0 <= y <= 40 and 0 <= z <= 10):
+            return False
+        return not any(s.lo <= z <= s.hi and (x - s.u) ** 2 + (y - s.v) ** 2 < (s.d / 2) ** 2 for s in segments)
+    return segments, inside
+
+
+def test_holes_are_read_from_their_faces():
+    segments, inside = block_with_holes()
+    holes = {(h.u, h.v): h for h in hf.classify(segments, inside)}
+    assert (5, 35) not in holes                                  # a closed cavity: no hole
+    blind = holes[(10, 10)]
+    assert not blind.through and blind.depth == pytest.approx(6) and blind.opens == [1] and not blind.counterbores
+    cb = holes[(30, 20)]
+    assert cb.through and cb.depth is None and cb.main.d == 2.2
+    assert [(s.d, end) for s, end in cb.counterbores] == [(4.4, -1)]
+    assert holes[(50, 10)].opens == [-1] and holes[(50, 10)].depth == pytest.approx(8)
+    # the build's tapped hole: only the one on its axis and span becomes M3
+    hf.apply_threads(list(holes.values()), [{"thread": "M3", "diameter": 3.0, "point": [50.0, 10.0, 0.0],
+                                             "direction": [0.0, 0.0, 1.0], "span": [0.0, 8.0]}])
+    assert holes[(50, 10)].thread == "M3" and holes[(50, 30)].thread == ""
+    assert hc.callouts_of(holes[(50, 10)]) == {3.0: ("M", " ↧8")}
+    assert hc.callouts_of(cb) == {2.2: ("⌀", ""), 4.4: ("⌴⌀", " ↧2")}
+    assert hc.callouts_of(blind) == {5.0: ("⌀", " ↧6")}
+
+
+def test_circles_of_a_view_get_their_holes_callouts_and_counts():
+    """The top view of the block (across X, up Y), centred 0.3 mm off the box's centre as TechDraw may: each
+    circle finds its hole; two holes behind each other on one circle count twice; a circle of no hole gets none."""
+    segments, inside = block_with_holes()
+    segments.append(hf.Segment(2, 50, 10, 3.0, 9.0, 10.0))      # a second Ø3 from the top, in line with (50, 10)
+    holes = hf.classify(segments, inside)
+    cx, cy = 30.3, 20.0
+    circles = [dp.Circle(1, 10 - cx, 10 - cy, 2.5), dp.Circle(2, 30 - cx, 20 - cy, 1.1), dp.Circle(3, 30 - cx, 20 - cy, 2.2),
+               dp.Circle(4, 50 - cx, 10 - cy, 1.5), dp.Circle(5, 50 - cx, 30 - cy, 1.5), dp.Circle(6, 0.0, 0.0, 7.0)]
+    callouts = hc.label(circles, holes, 2, (1, 0, 0), (0, 1, 0), (30, 20, 5))
+    assert [(k.symbol, k.suffix, len(k.holes)) for k in callouts[1]] == [("⌀", " ↧6", 1)]
+    assert [(k.symbol, k.suffix) for k in callouts[3]] == [("⌴⌀", " ↧2")]
+    assert [(k.symbol, k.suffix, len(k.holes)) for k in callouts[4]] == [("⌀", " ↧1", 1), ("⌀", " ↧8", 1)]
+    assert 6 not in callouts
+    # a front view (looking along Y) sees none of these holes
+    assert hc.label(circles, holes, 1, (1, 0, 0), (0, 0, 1), (30, 20, 5)) == {}
+    # in the plan, the two Ø3 8 deep count as two holes however many circles show them
+    marked = [dp.Circle(c.edge, c.x, c.y, c.r, k) for c in circles for k in callouts.get(c.edge, [None])]
+    ext = {"xmin": dp.Extreme(-30.3, (-30.3, 0)), "xmax": dp.Extreme(29.7, (29.7, 0)),
+           "ymin": dp.Extreme(-20, (0, -20)), "ymax": dp.Extreme(20, (0, 20))}
+    plan = dp.plan([(-30.3, -20), (29.7, 20)] + [(c.x, c.y) for c in circles], marked, ext)
+    texts = sorted(f"{d.prefix}{d.symbol}{d.value:g}{d.suffix}" for d in plan.dims if d.kind == "diameter")
+    assert texts == ["2× ⌀3 ↧8", "⌀14", "⌀2.2", "⌀3 ↧1", "⌀5 ↧6", "⌴⌀4.4 ↧2"]
+
+
+def test_diameter_texts_get_the_room_they_need_at_each_scale():
+    """A circle near the right edge: its text reaches past the outline, further at a small scale than at a large
+    one relative to the part; the view's box in the layout takes the larger of that and its linear dimensions."""
+    circle = dp.Circle(1, 25.0, 0.0, 2.0, hc.Callout("⌴⌀", " ↧2.2", frozenset({0})))
+    ext = {"xmin": dp.Extreme(-30, (-30, 0)), "xmax": dp.Extreme(30, (30, 0)),
+           "ymin": dp.Extreme(-10, (0, -10)), "ymax": dp.Extreme(10, (0, 10))}
+    plan = dp.plan([(-30, -10), (30, 10), (25, 0)], [circle], ext)
+    (diameter,) = [d for d in plan.dims if d.kind == "diameter"]
+    left, right, below, above = dp.label_room(plan, 1.0, ext)
+    assert right > dp.label_width(diameter) - 5 + dp.LEADER * 0.7 - 1 and left == 0
+    assert diameter.refs == [("edge", 1)] and diameter.extra == 0.0      # the plan itself is untouched
+    box = sl.ViewBox(-30, 30, -10, 10, plan.left, plan.right, plan.below, plan.above,
+                     lambda s: dp.label_room(plan, s, ext))
+    assert box.extents(1.0)[1] == pytest.approx(30 + right)
+    assert box.extents(2.0)[0] == pytest.approx(60 + plan.left)
+
+
+def test_notes_wrap_to_their_strip():
+    lines = nb.wrap(["short", "a note " * 30], 110.0, 3.5)
+    assert lines[0] == "short" and len(lines) > 2
+    assert all(len(line) * nb.EM * 3.5 <= 110.0 for line in lines)
+    assert " ".join(lines[1:]) == ("a note " * 30).strip()
+    assert nb.height(len(lines), 3.5) == pytest.approx(len(lines) * nb.LINE_PITCH * 3.5 + 2 * nb.MARGIN)

@@ -56,8 +56,13 @@ def visible_edges(view) -> list:
     return out
 
 
+def hidden_edges(view, visible_count: int) -> list:
+    """(index, edge) of the hidden edges: TechDraw lists them after the visible ones."""
+    return [(i, e) for i, e in enumerate(edges(view)) if i >= visible_count]
+
+
 def full_circles(visible) -> list:
-    """Visible edges that are whole circles (a hole, bore or shaft seen along its axis)."""
+    """Edges (index, edge) that are whole circles (a hole, bore or shaft seen along its axis)."""
     out = []
     for i, e in visible:
         if isinstance(e.Curve, Part.Circle) and abs(abs(e.LastParameter - e.FirstParameter) - 2 * math.pi) < 1e-6:
