@@ -18,16 +18,20 @@ def draw_one(entry: dict) -> dict:
     import FreeCAD
     import techdraw_page
     doc = FreeCAD.newDocument("Drawing")
+    page = None
     try:
         page = techdraw_page.PartPage(doc, entry)
         layout = page.layout()
         dims = page.dimension()
         page.annotate(layout)
+        page.draw_lines()
         page.export()
         return {"name": entry["name"], "pdf": os.path.basename(entry["pdf"]), "svg": os.path.basename(entry["svg"]),
-                "sheet": layout.sheet.name, "scale": layout.scale, "dimensions": dims}
+                "sheet": layout.sheet.name, "scale": layout.scale, "views": page.view_centres(), "dimensions": dims}
     finally:
         FreeCAD.closeDocument(doc.Name)
+        if page is not None:
+            page.close()
 
 
 def main() -> int:
@@ -36,6 +40,9 @@ def main() -> int:
     import FreeCAD
     # before TechDrawGui loads: hole centre marks on the exported page too (default: screen only)
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/TechDraw/Decorations").SetBool("PrintCenterMarks", True)
+    # TechDraw's own hidden lines with no pen (the style is the preference + 1: -1 is Qt::NoPen): their 0.4 mm
+    # hairline dash prints solid. line_overlay draws them instead, from the same hidden-line removal.
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/TechDraw/General").SetInt("HiddenLine", -1)
     import FreeCADGui  # noqa: F401  (the GUI side must be up before TechDraw computes views)
     import TechDrawGui  # noqa: F401
     report = {"freecad": ".".join(FreeCAD.Version()[:3]), "drawings": []}

@@ -6,7 +6,8 @@ Pure Python, so it runs both inside FreeCAD and in the project's tests. Page coo
 with the origin at the sheet's bottom-left corner and y up (how TechDraw places views).
 
 First-angle arrangement (ISO 128-30): the front view at the top left, the view from the left to its
-right, the view from above below it; the isometric view goes wherever it fits. The notes sit in a strip
+right, the view from above below it; the isometric view goes wherever it fits, at the same scale or, when it
+does not fit there, at up to two standard scales smaller (it is not dimensioned). The notes sit in a strip
 above the title block."""
 from __future__ import annotations
 
@@ -14,9 +15,10 @@ from dataclasses import dataclass
 
 GAP = 6.0          # between the boxes of two views (each box already includes its dimensions)
 INSET = 4.0        # between the drawing border and any view box
-NOTES_HEIGHT = 26.0
+NOTES_HEIGHT = 26.0   # the notes strip's height unless the notes need another (notes_block)
 # ISO 5455 scales, largest first
 SCALES = (10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1)
+ISO_STEPS = 2      # how many standard scales the isometric view may drop below the others
 
 
 @dataclass(frozen=True)
@@ -38,8 +40,8 @@ SHEETS = (
 
 @dataclass(frozen=True)
 class ViewBox:
-    """A view's drawn extent around its centre in model mm (unscaled) and the room its dimensions need
-    on each side in page mm (independent of the scale)."""
+    """A view's drawn extent around its centre in model mm (unscaled) and the room its dimensions need on each
+    side in page mm: the linear dimensions' stacks (independent of the scale) and its texts (which depend on it)."""
     xmin: float
     xmax: float
     ymin: float
@@ -48,11 +50,15 @@ class ViewBox:
     right: float = 0.0
     below: float = 0.0
     above: float = 0.0
+    # scale -> (left, right, below, above): page mm its texts reach past the outline at that scale (diameter texts
+    # sit at the end of leaders from circles, which move with the scale)
+    texts: object = None
 
     def extents(self, scale: float) -> tuple:
         """(left, right, below, above) distances from the view centre to the edge of its box, page mm."""
-        return (-self.xmin * scale + self.left, self.xmax * scale + self.right,
-                -self.ymin * scale + self.below, self.ymax * scale + self.above)
+        tl, tr, tb, ta = self.texts(scale) if self.texts is not None else (0.0, 0.0, 0.0, 0.0)
+        return (-self.xmin * scale + max(self.left, tl), self.xmax * scale + max(self.right, tr),
+                -self.ymin * scale + max(self.below, tb), self.ymax * scale + max(self.above, ta))
 
 
 @dataclass(frozen=True)
@@ -62,6 +68,7 @@ class Layout:
     centres: dict       # view name -> (x, y) page mm
     boxes: dict         # view name -> (x0, y0, x1, y1) page mm, dimensions included
     notes: tuple        # x0, y0, x1, y1 of the notes strip
+    iso_scale: float = 0.0   # the isometric view's
 
 
 def scale_label(scale: float) -> str:
@@ -76,17 +83,17 @@ def _inside(box, frame) -> bool:
     return box[0] >= frame[0] - 1e-9 and box[1] >= frame[1] - 1e-9 and box[2] <= frame[2] + 1e-9 and box[3] <= frame[3] + 1e-9
 
 
-def _arrange(sheet: Sheet, scale: float, views: dict, spread: float):
+def _arrange(sheet: Sheet, scale: float, views: dict, spread: float, notes_height: float):
     """Principal views in the first-angle pattern; spread (0..1) shares out the room left over."""
     x0, y0, x1, y1 = sheet.border
     frame = (x0 + INSET, y0 + INSET, x1 - INSET, y1 - INSET)
     tb = sheet.title_block
-    notes = (tb[0], tb[3], tb[2], tb[3] + NOTES_HEIGHT)
+    notes = (tb[0], tb[3], tb[2], tb[3] + notes_height)
     obstacle = (tb[0] - GAP, tb[1], tb[2], notes[3] + GAP)
     fl, fr, fb, fa = views["front"].extents(scale)
     sl, sr, sb, sa = views["left"].extents(scale)
     tl, tr, tb_, ta = views["top"].extents(scale)
-    il, ir, ib, ia = views["iso"].extents(scale)
+    il, ir, _, _ = views["iso"].extents(scale)      # room kept for it when sharing out the slack
     col1_l, col1_r = max(fl, tl), max(fr, tr)
     row1_b, row1_a = max(fb, sb), max(fa, sa)
     width = col1_l + col1_r + GAP + sl + sr
@@ -105,38 +112,41 @@ def _arrange(sheet: Sheet, scale: float, views: dict, spread: float):
     for box in boxes.values():
         if not _inside(box, frame) or _overlap(box, obstacle):
             return None
-    # The isometric view: the first free spot, most open corner first.
-    w, h = il + ir, ib + ia
-    spots = [(frame[2] - w, frame[3] - h),                          # top right
-             (frame[2] - w, obstacle[3] + GAP),                     # right, above the notes
-             (boxes["left"][0], boxes["left"][1] - GAP - h),        # under the left view
-             (boxes["left"][2] + GAP, frame[3] - h),                # right of the left view
-             (boxes["top"][2] + GAP, boxes["top"][1])]              # right of the top view
-    for sx0, sy0 in spots:
-        box = (sx0, sy0, sx0 + w, sy0 + h)
-        if _inside(box, frame) and not _overlap(box, obstacle) and not any(_overlap(box, b) for b in boxes.values()):
-            boxes["iso"] = box
-            centres["iso"] = (sx0 + il, sy0 + ib)
-            return Layout(sheet, scale, centres, boxes, notes)
+    # The isometric view: the first free spot, most open corner first, at the largest scale that finds one.
+    for iso_scale in [s for s in SCALES if s <= scale][:ISO_STEPS + 1]:
+        jl, jr, jb, ja = views["iso"].extents(iso_scale)
+        w, h = jl + jr, jb + ja
+        spots = [(frame[2] - w, frame[3] - h),                          # top right
+                 (frame[2] - w, obstacle[3] + GAP),                     # right, above the notes
+                 (boxes["left"][0], boxes["left"][1] - GAP - h),        # under the left view
+                 (boxes["left"][2] + GAP, frame[3] - h),                # right of the left view
+                 (boxes["top"][2] + GAP, boxes["top"][1])]              # right of the top view
+        for sx0, sy0 in spots:
+            box = (sx0, sy0, sx0 + w, sy0 + h)
+            free = not any(_overlap(box, b) for b in boxes.values())
+            if free and _inside(box, frame) and not _overlap(box, obstacle):
+                boxes["iso"] = box
+                centres["iso"] = (sx0 + jl, sy0 + jb)
+                return Layout(sheet, scale, centres, boxes, notes, iso_scale)
     return None
 
 
-def fit(sheet: Sheet, scale: float, views: dict) -> Layout | None:
+def fit(sheet: Sheet, scale: float, views: dict, notes_height: float = NOTES_HEIGHT) -> Layout | None:
     """The layout of the four views (front, left, top, iso) at this scale on this sheet, or None."""
     for spread in (1.0, 0.5, 0.0):
-        layout = _arrange(sheet, scale, views, spread)
+        layout = _arrange(sheet, scale, views, spread, notes_height)
         if layout is not None:
             return layout
     return None
 
 
-def choose(views: dict) -> Layout:
+def choose(views: dict, notes_height: float = NOTES_HEIGHT) -> Layout:
     """A4 at the largest standard scale that fits; A3 only when A4 would need a reduced scale and A3 allows a
     larger one."""
     best = {}
     for sheet in SHEETS:
         for scale in SCALES:
-            layout = fit(sheet, scale, views)
+            layout = fit(sheet, scale, views, notes_height)
             if layout is not None:
                 best[sheet.name] = layout
                 break

@@ -14,6 +14,7 @@ import Part
 from dimension_plan import Circle, Extreme
 
 FAR = 1.0e4
+DEFLECTION = 0.01   # page mm: how far a drawn polyline may stray from its curve
 
 
 def _indexed(getter):
@@ -55,8 +56,13 @@ def visible_edges(view) -> list:
     return out
 
 
+def hidden_edges(view, visible_count: int) -> list:
+    """(index, edge) of the hidden edges: TechDraw lists them after the visible ones."""
+    return [(i, e) for i, e in enumerate(edges(view)) if i >= visible_count]
+
+
 def full_circles(visible) -> list:
-    """Visible edges that are whole circles (a hole, bore or shaft seen along its axis)."""
+    """Edges (index, edge) that are whole circles (a hole, bore or shaft seen along its axis)."""
     out = []
     for i, e in visible:
         if isinstance(e.Curve, Part.Circle) and abs(abs(e.LastParameter - e.FirstParameter) - 2 * math.pi) < 1e-6:
@@ -84,4 +90,13 @@ def extremes(visible) -> dict:
         dist, point = best
         coord = a[axis] + sign * dist
         out[side] = Extreme(coord, (point.x, point.y))
+    return out
+
+
+def polylines(shown) -> list:
+    """Edges as getVisibleEdges/getHiddenEdges report them (page mm, y down) as polylines for line_overlay."""
+    out = []
+    for e in shown:
+        points = e.discretize(Deflection=DEFLECTION)
+        out.append([(p.x, p.y) for p in points])
     return out

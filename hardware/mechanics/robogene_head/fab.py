@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from . import external as external_mod
-from . import freecad, joint_config, kinematics, massprops, openscad, render, urdf
+from . import freecad, joint_config, kinematics, massprops, openscad, render, threads, urdf
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
@@ -203,9 +203,11 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         raise BuildError("FreeCAD rejected: " + "; ".join(f"{r['file']}: {r['problem']}" for r in bad_steps))
     densities = params.root.node("materials")
     machined = [d for d in summary if d["kind"] == "machined"]
+    tapped = threads.tapped_holes(params, parts)
     _draw_machined(out, cache, progress, [freecad.DrawingJob(
         d["design"], out / "step" / f"{d['design']}.step", d["material"], densities.num(d["material"]),
-        designs[d["design"]]["part"].note or "", d["hash"][:8], f"step/{d['design']}.step") for d in machined])
+        designs[d["design"]]["part"].note or "", d["hash"][:8], f"step/{d['design']}.step",
+        [h.as_dict() for h in tapped.get(d["design"], [])]) for d in machined])
 
     # 9. Renders at a few joint poses.
     render_out = [out / "renders" / f"{view.name}.png" for view in render.VIEWS]
@@ -237,8 +239,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
 
 def _draw_machined(out: Path, cache: Cache, progress: Progress, jobs: list) -> None:
-    """TechDraw drawings (PDF + SVG) of the machined parts; only parts whose geometry, material, note or
-    drawing code changed are redrawn, all of them in one FreeCAD session. reports/drawings.json lists every
+    """TechDraw drawings (PDF + SVG) of the machined parts; only parts whose geometry, material, note, tapped
+    holes or drawing code changed are redrawn, all of them in one FreeCAD session. reports/drawings.json lists every
     drawing's sheet, scale and dimensions."""
     report_path = out / "reports" / "drawings.json"
     try:
@@ -246,7 +248,7 @@ def _draw_machined(out: Path, cache: Cache, progress: Progress, jobs: list) -> N
     except (OSError, ValueError, KeyError):
         report = {}
     code = freecad.drawing_digest()
-    keys = {j.name: digest(j.name, j.material, j.density, j.note, j.revision, j.source, code) for j in jobs}
+    keys = {j.name: digest(j.name, j.material, j.density, j.note, j.revision, j.source, j.threads, code) for j in jobs}
     outputs = {j.name: [out / "drawings" / f"{j.name}.pdf", out / "drawings" / f"{j.name}.svg"] for j in jobs}
     stale = [j for j in jobs if not (cache.fresh(f"drawing:{j.name}", keys[j.name], outputs[j.name]) and j.name in report)]
     for i, j in enumerate(j for j in jobs if j not in stale):

@@ -12,14 +12,16 @@ import signal
 import subprocess
 import tempfile
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 FREECAD_DIR = Path(__file__).resolve().parents[1] / "freecad"
 CHECK_SCRIPT = FREECAD_DIR / "step_check.py"
 DRAW_SCRIPT = FREECAD_DIR / "draw_parts.py"
-DRAW_MODULES = ("draw_parts.py", "techdraw_page.py", "view_geometry.py", "dimension_plan.py", "sheet_layout.py")
+DRAW_MODULES = ("draw_parts.py", "techdraw_page.py", "view_geometry.py", "dimension_plan.py", "sheet_layout.py",
+                "line_overlay.py", "title_block.py", "hole_features.py", "hole_callouts.py",
+                "notes_block.py")
 LICENCE = "CERN-OHL-S-2.0"
 INSTALL_HINT = "install the packages in tools/setup/apt/hardware.txt"
 
@@ -81,6 +83,7 @@ class DrawingJob:
     note: str = ""
     revision: str = ""  # shown in the title block: which geometry this drawing shows
     source: str = ""    # shown in the title block
+    threads: list = field(default_factory=list)   # tapped holes (threads.TappedHole.as_dict), design frame
 
 
 def draw(jobs: list[DrawingJob], folder: Path, on_progress: Callable[[int, int, str], None] | None = None,
@@ -101,7 +104,7 @@ def draw(jobs: list[DrawingJob], folder: Path, on_progress: Callable[[int, int, 
             {"name": j.name, "step": str(j.step.resolve()), "pdf": str((folder / f"{j.name}.pdf").resolve()),
              "svg": str((folder / f"{j.name}.svg").resolve()), "material": j.material, "density": j.density,
              "note": j.note, "licence": LICENCE, "revision": j.revision or "-",
-             "source": j.source or f"step/{j.name}.step"} for j in jobs]}
+             "source": j.source or f"step/{j.name}.step", "threads": j.threads} for j in jobs]}
         job_path = Path(home) / "job.json"
         job_path.write_text(json.dumps(job))
         log = Path(home) / "freecad.log"
