@@ -7,6 +7,8 @@
 // test_motor. Replies must match byte for byte, except the 8 bytes of each timestamp's time.
 #include <gtest/gtest.h>
 
+#include "../bottle/vector_cases.hpp"
+
 #include <chrono>
 #include <cstring>
 #include <string>
@@ -27,16 +29,6 @@ std::vector<std::uint8_t> unhex(const std::string& hex) {
   std::vector<std::uint8_t> out;
   for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
     out.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(i, 2), nullptr, 16)));
-  }
-  return out;
-}
-
-std::string hex(const std::vector<std::uint8_t>& bytes) {
-  static const char* digits = "0123456789abcdef";
-  std::string out;
-  for (auto b : bytes) {
-    out += digits[b >> 4];
-    out += digits[b & 15];
   }
   return out;
 }
@@ -101,17 +93,17 @@ struct Board {
 // Replies of queries end with [tsta] <n> <time> [ok]: the time is the 8 bytes before [ok].
 void expect_same_but_time(const std::vector<std::uint8_t>& got, const std::vector<std::uint8_t>& want,
                           double before, double after, const char* what) {
-  ASSERT_EQ(got.size(), want.size()) << what << "\n got " << hex(got) << "\nwant " << hex(want);
+  ASSERT_EQ(got.size(), want.size()) << what << "\n got " << robogene::testing::to_hex(got) << "\nwant " << robogene::testing::to_hex(want);
   const bool timed = want.size() > 20 && std::memcmp(want.data() + want.size() - 20, "\x0a\0\0\0", 4) == 0;
   if (!timed) {
-    EXPECT_EQ(hex(got), hex(want)) << what;
+    EXPECT_EQ(robogene::testing::to_hex(got), robogene::testing::to_hex(want)) << what;
     return;
   }
   const std::size_t t = want.size() - 16;
   std::vector<std::uint8_t> a = got, b = want;
   std::fill(a.begin() + static_cast<long>(t), a.begin() + static_cast<long>(t + 8), 0);
   std::fill(b.begin() + static_cast<long>(t), b.begin() + static_cast<long>(t + 8), 0);
-  EXPECT_EQ(hex(a), hex(b)) << what;
+  EXPECT_EQ(robogene::testing::to_hex(a), robogene::testing::to_hex(b)) << what;
   double time = 0;
   std::memcpy(&time, got.data() + t, 8);
   EXPECT_GE(time, before) << what;
@@ -231,9 +223,9 @@ TEST(ControlboardServer, TorqueAndPidRequestsSucceedInYarpsShapes) {
     const double v = k;
     std::vector<std::uint8_t> b(8);
     std::memcpy(b.data(), &v, 8);
-    fields += hex(b);
+    fields += robogene::testing::to_hex(b);
   }
-  EXPECT_EQ(hex(pid.to_bytes()), "0001000004000000" "0900000069730000" "0900000070696400"
+  EXPECT_EQ(robogene::testing::to_hex(pid.to_bytes()), "0001000004000000" "0900000069730000" "0900000070696400"
                                  "0a0100000a000000" + fields + "090000006f6b0000");
   EXPECT_EQ(board.ask("[get] [pid] [pid] [vel] 2"),
             "[is] [pid] (0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0 0.0) [ok]");  // one Pid per type
@@ -294,7 +286,7 @@ TEST(ControlboardServer, StatePortMessageIsTheEncoderVector) {
   EXPECT_EQ(board.ask("[set] [encs] (1.0 2.0 3.0 4.0)"), "[ok]");
   Bottle state;
   ASSERT_TRUE(board.server->publish_state(state));
-  EXPECT_EQ(hex(state.to_bytes()),
+  EXPECT_EQ(robogene::testing::to_hex(state.to_bytes()),
             "0a01000004000000000000000000f03f000000000000004000000000000008400000000000001040");
 }
 

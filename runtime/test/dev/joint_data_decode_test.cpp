@@ -5,6 +5,7 @@
 // messages, each refused with the item and field at fault.
 #include <gtest/gtest.h>
 
+#include "../bottle/vector_cases.hpp"
 #include "captured_joint_data.hpp"
 
 #include "robogene/dev/generated/interfaces.hpp"
@@ -17,14 +18,6 @@ using namespace robogene;
 using namespace robogene::dev;
 
 namespace {
-
-Bottle from_hex(const std::string& hex) {
-  std::vector<std::uint8_t> bytes;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
-    bytes.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(i, 2), nullptr, 16)));
-  }
-  return Bottle::from_bytes(bytes);
-}
 
 std::string error_of(const std::string& text) {
   try {
@@ -51,7 +44,7 @@ std::string two_axes_with(std::size_t field, const std::string& replacement) {
 }  // namespace
 
 TEST(JointDataDecode, ReadsYarp35sCapturedMessage) {
-  const JointData d = decode_joint_data(from_hex(test::kCapturedJointData));
+  const JointData d = decode_joint_data(Bottle::from_bytes(robogene::testing::from_hex(test::kCapturedJointData)));
   EXPECT_EQ(d.position.values, (std::vector<double>{1, 2, 3, 4}));
   EXPECT_TRUE(d.position.valid);
   EXPECT_EQ(d.velocity.values, (std::vector<double>{0, 0, 0, 0}));

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
+#include "../bottle/vector_cases.hpp"
+
 #include "captured_joint_data.hpp"
 
 #include "robogene/dev/generated/interfaces.hpp"
@@ -12,16 +14,6 @@ using namespace robogene;
 using namespace robogene::dev;
 
 namespace {
-
-std::string hex(const std::vector<std::uint8_t>& bytes) {
-  static const char* digits = "0123456789abcdef";
-  std::string out;
-  for (auto b : bytes) {
-    out += digits[b >> 4];
-    out += digits[b & 15];
-  }
-  return out;
-}
 
 
 }  // namespace
@@ -57,11 +49,11 @@ TEST(JointData, LayoutMatchesYarpsAndFieldsTestMotorLacksAreInvalid) {
         edited.add(captured[i]);
       }
     }
-    expected = hex(edited.to_bytes());
+    expected = robogene::testing::to_hex(edited.to_bytes());
   };
   for (std::size_t field : {3u, 4u, 5u, 7u, 8u}) replace_field(field, "(0.0 0.0 0.0 0.0)");
   replace_field(10, "(0 0 0 0)");
-  EXPECT_EQ(hex(message.to_bytes()), expected);
+  EXPECT_EQ(robogene::testing::to_hex(message.to_bytes()), expected);
   EXPECT_EQ(message.to_text(),
             "(1.0 2.0 3.0 4.0) [ok] (0.0 0.0 0.0 0.0) [ok] (0.0 0.0 0.0 0.0) [ok] "
             "(0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] (0.0 0.0 0.0 0.0) [fail] "

@@ -7,6 +7,8 @@
 // tests/codegen/test_python_pid_switches.py.
 #include <gtest/gtest.h>
 
+#include "../bottle/vector_cases.hpp"
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -20,16 +22,6 @@ using namespace robogene;
 using namespace robogene::dev;
 
 namespace {
-
-std::string hex(const std::vector<std::uint8_t>& bytes) {
-  static const char* digits = "0123456789abcdef";
-  std::string out;
-  for (auto b : bytes) {
-    out += digits[b >> 4];
-    out += digits[b & 15];
-  }
-  return out;
-}
 
 // A three-axis test_motor on a manual clock, its server, and a client whose every request and
 // reply goes through the binary form.
@@ -73,7 +65,7 @@ TEST(PidSwitchesRpc, RepliesHaveYarpsShapes) {
   Remote r;
   EXPECT_EQ(r.ask("[get] [pid] [ena] [pos] 0"), "[is] [pid] 1 [ok]");
   // isPidEnabled's bool is an int32, as handlePidMsg's addInt32; no stamp.
-  EXPECT_EQ(hex(r.server->respond(Bottle::from_text("[get] [pid] [ena] [vel] 2")).to_bytes()),
+  EXPECT_EQ(robogene::testing::to_hex(r.server->respond(Bottle::from_text("[get] [pid] [ena] [vel] 2")).to_bytes()),
             "0001000004000000" "0900000069730000" "0900000070696400" "0100000001000000" "090000006f6b0000");
   EXPECT_EQ(r.ask("[set] [pid] [off] [pos] 1 2.5"), "[ok]");
   EXPECT_EQ(r.ask("[get] [pid] [pid] [pos] 1"), "[is] [pid] (0.0 0.0 0.0 0.0 0.0 2.5 0.0 0.0 0.0 0.0) [ok]");
