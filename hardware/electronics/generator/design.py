@@ -168,8 +168,25 @@ def _axis_parts(n, first):
         _r(f"R{21 + 10 * n}", "10k", m + "ENC_A", "GND", b, "RC0603FR-0710KL"),
         _r(f"R{22 + 10 * n}", "10k", m + "ENC_B", "GND", b, "RC0603FR-0710KL"),
         Part(f"J{12 + 10 * n}", "Connector_Generic:Conn_01x05", "AEA", JST_PH.format(n=5), "B5B-PH-K-S(LF)(SN)", "JST",
-             {"1": "+5V", "2": "AEA_CLK", "3": m + "AEA_CS", "4": "AEA_DO", "5": "GND"}, b,
+             {"1": "+5V", "2": "AEA_CLK", "3": m + "AEA_CS", "4": "AEA_ENC_DO", "5": "GND"}, b,
              f"joint encoder {n} (absolute, SSI)"),
+    ]
+
+
+def _aea_parts():
+    """The absolute encoders' shared SSI data line (each encoder drives it while its chip select is low)
+    reaches PB4 through a single Schmitt buffer of the same kind as the quadrature encoders' buffers."""
+    b = "aea"
+    return [
+        # The encoders run on 5 V and drive DO to 5 V. PB4 is 5 V-tolerant only while 3.3 V is up, and the
+        # encoders have 5 V before 3.3 V rises and after it falls. The buffer runs on 3.3 V, its input
+        # takes 5.5 V with or without supply (Ioff), and its output is off while it is unpowered. The
+        # pull-down holds the input low when no encoder is plugged in or none is selected (DO tri-stated).
+        Part("U11", "74xGxx:74LVC1G17", "74LVC1G17", "Package_TO_SOT_SMD:SOT-23-5", "SN74LVC1G17DBVR",
+             "Texas Instruments", {"2": "AEA_ENC_DO", "4": "AEA_DO", "5": "+3V3", "3": "GND"}, b,
+             "absolute-encoder data buffer (5 V in, 3.3 V out)"),
+        _c("C17", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
+        _r("R8", "10k", "AEA_ENC_DO", "GND", b, "RC0603FR-0710KL"),
     ]
 
 
@@ -184,4 +201,4 @@ def _mounting_holes():
 
 def parts():
     return (_power_parts() + _mcu_parts() + _shared_motor_parts() + _can_parts()
-            + _axis_parts(1, 5) + _axis_parts(2, 7) + _mounting_holes())
+            + _axis_parts(1, 5) + _axis_parts(2, 7) + _aea_parts() + _mounting_holes())

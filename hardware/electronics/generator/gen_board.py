@@ -34,6 +34,8 @@ ANCHORS = {
     "J21": (22.0, 55.0, 0), "J22": (34.0, 55.0, 0), "J31": (49.0, 55.0, 0), "J32": (61.0, 55.0, 0),
     # encoder buffers between their connector and the MCU: inputs face the connector, outputs the MCU
     "U9": (31.0, 45.0, 90), "U10": (53.0, 45.0, 90),
+    # the absolute encoders' data buffer, between motor 1's AEA connector (J22) and the MCU
+    "U11": (42.0, 45.0, 90),
 }
 POWER_NETS = {"GND", "+12V", "+3V3", "+5V"}
 # Parts joined to the rest only by supply nets (decoupling, bulk) go next to the part they serve; so do
@@ -41,7 +43,8 @@ POWER_NETS = {"GND", "+12V", "+3V3", "+5V"}
 NEAR = {"C1": "Q1", "R1": "Q1", "D2": "Q1", "C3": "U2", "C4": "U2", "C5": "L1", "C6": "L1", "C7": "U3",
         "C8": "U3", "C9": "U1", "C10": "U1", "C11": "U1", "C12": "U1", "C16": "U4", "D4": "U4",
         "C30": "U5", "C31": "U5", "C32": "U6", "C40": "U7", "C41": "U7", "C42": "U8", "R6": "JP1",
-        "C33": "U9", "C43": "U10", "R31": "U9", "R32": "U9", "R41": "U10", "R42": "U10"}
+        "C33": "U9", "C43": "U10", "R31": "U9", "R32": "U9", "R41": "U10", "R42": "U10",
+        "C17": "U11", "R8": "U11"}
 
 
 def mm(v):

@@ -178,6 +178,7 @@ BLOCKS = {
     "axis1": ("Motor 1: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 15, 195, 280),
     "axis2": ("Motor 2: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 310, 195, 270),
     "mech": ("Mounting holes (M3)", 310, 125, 75),
+    "aea": ("Absolute encoders: shared SSI data line, 5 V in, 3.3 V Schmitt buffer to PB4", 395, 125, 185),
 }
 # KiCad's default drawing sheet: a border 10 mm in with a 2 mm ruler strip inside it, and the title
 # block within 110 x 34 mm of the border's bottom-right corner.

@@ -81,7 +81,19 @@ def main(pcb, workdir, java, classpath, layers="F.Cu,In1.Cu,In2.Cu,B.Cu"):
     for net, layer in removed:
         gen_board.add_zone(board, net, layer)
     finish(board)
+    check_connected(board, workdir)
     pcbnew.SaveBoard(pcb, board)
+
+
+def check_connected(board, workdir):
+    """Freerouting can report a complete session that lacks a net's wiring (seen once: BOOT0 had no
+    wire in the session, yet the log said nothing was unrouted). Count what the imported board leaves
+    unconnected, as DRC would, and keep the committed board when anything is."""
+    board.BuildConnectivity()
+    left = board.GetConnectivity().GetUnconnectedCount(False)
+    if left:
+        raise RuntimeError(f"the routed board has {left} unconnected item(s) although freerouting reported none "
+                           f"unrouted; board not saved (see {os.path.join(workdir, 'freerouting.log')})")
 
 
 if __name__ == "__main__":
