@@ -41,14 +41,20 @@ class Rpc:
     def replies(self) -> list:
         return [l[len("Response: "):] for l in self.proc.stdout if l.startswith("Response: ")]
 
-    def value(self, request: str) -> str:
-        reply = self.call(request)
+    def value(self, request: str, reply: str = "") -> str:
+        reply = reply or self.call(request)
         m = re.fullmatch(r"\[is\] \S+ (.+) \[tsta\] \d+ \S+ \[ok\]", reply)
         assert m, f"{request}: {reply}"
         return m.group(1)
 
-    def encoders(self) -> list:
-        return [float(x) for x in self.value("[get] [encs]").strip("()").split()]
+    def encoders(self, timeout: float = 10) -> list:
+        """YARP's client answers [get] [encs] from the last stateExt:o message, and [fail] while it
+        holds no fresh one (before the first, or when udp messages come late on a loaded machine)."""
+        deadline = time.monotonic() + timeout
+        while (reply := self.call("[get] [encs]")) == "[fail]":
+            assert time.monotonic() < deadline, f"no fresh encoders from stateExt:o within {timeout} s"
+            time.sleep(0.05)
+        return [float(x) for x in self.value("[get] [encs]", reply).strip("()").split()]
 
 
 def test_yarps_remote_controlboard_moves_the_simulated_can_head(yarpserver, yarp, procs, net):
@@ -67,13 +73,7 @@ def test_yarps_remote_controlboard_moves_the_simulated_can_head(yarpserver, yarp
 
     limits = head_limits()
     assert theirs.value("[get] [axes]") == str(len(limits))
-    # YARP's client answers [get] [encs] from what stateExt:o streamed, and [fail] until the first
-    # message has arrived (a moment after it connected): wait for that first.
-    deadline = time.monotonic() + 10
-    while theirs.call("[get] [encs]") == "[fail]":
-        assert time.monotonic() < deadline, "no encoders arrived from /interop/head/stateExt:o within 10 s"
-        time.sleep(0.1)
-    start = theirs.encoders()
+    start = theirs.encoders()  # waits for the first stateExt:o message to arrive
     targets = [lo + 0.3 * (hi - lo) for lo, hi in limits]
     for j, target in enumerate(targets):
         assert theirs.call(f"[set] [vel] {j} 30.0") == "[ok]"

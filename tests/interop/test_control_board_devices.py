@@ -91,14 +91,22 @@ def test_yarps_remote_controlboard_drives_robogene_dev(yarpserver, yarp, ours, p
     # YARP's client reads the encoders from our stateExt:o: they follow test_motor's motion.
     sent = [4]
 
-    def encoders():
+    seen = []
+
+    def encoders_reach(condition) -> bool:
+        """Asks YARP's client for the encoders; it answers [fail] while it holds no fresh stateExt:o
+        message (before the first, or when udp messages come late on a loaded machine): not yet."""
         theirs.send("[get] [encs]")
         sent[0] += 1
-        return [float(x) for x in value_of(responses(theirs, sent[0])[-1]).strip("()").split()]
+        reply = responses(theirs, sent[0])[-1]
+        if reply == "[fail]":
+            return False
+        seen.append([float(x) for x in value_of(reply).strip("()").split()])
+        return condition(seen[-1])
 
-    theirs.wait_until("both joints moving", lambda: min(encoders()[:2]) > 0.0, 10)
-    theirs.wait_until("joint 0 at its target", lambda: abs(encoders()[0] - 30.0) < 1e-6, 10)
-    last = encoders()
+    theirs.wait_until("both joints moving", lambda: encoders_reach(lambda e: min(e[:2]) > 0.0), 10)
+    theirs.wait_until("joint 0 at its target", lambda: encoders_reach(lambda e: abs(e[0] - 30.0) < 1e-6), 10)
+    last = seen[-1]
     assert len(last) == 4 and last[1] > 0.0 and last[2] == last[3] == 0.0, last
 
 
