@@ -5,6 +5,8 @@
 // request and reply is encoded to bytes and decoded again, as a port would carry them.
 #include <gtest/gtest.h>
 
+#include "../support/in_process_board.hpp"
+
 #include <cmath>
 #include <string>
 #include <utility>
@@ -17,33 +19,7 @@
 using namespace robogene;
 using namespace robogene::dev;
 
-namespace {
-
-struct Remote {
-  PolyDriver device;
-  std::unique_ptr<ControlboardServer> server;
-  std::unique_ptr<ControlboardClient> client;
-  ISimulationClock* clock = nullptr;
-  int exchanges = 0;
-
-  explicit Remote(std::function<Bottle(const Bottle&, Bottle)> tamper = nullptr) {
-    EXPECT_TRUE(device.open(Property::from_command_line(
-        {"--device", "test_motor", "--axes", "3", "--clock", "manual"})));
-    DeviceDriver* driver = nullptr;
-    EXPECT_TRUE(device.view(driver) && device.view(clock));
-    server = std::make_unique<ControlboardServer>(*driver);
-    client = std::make_unique<ControlboardClient>([this, tamper](const Bottle& req, Bottle& reply) {
-      ++exchanges;
-      const Bottle on_server = Bottle::from_bytes(req.to_bytes());
-      Bottle answer = server->respond(on_server);
-      if (tamper) answer = tamper(on_server, answer);
-      reply = Bottle::from_bytes(answer.to_bytes());
-      return true;
-    });
-  }
-};
-
-}  // namespace
+using Remote = robogene::test::InProcessBoard;
 
 // Paper section 3.3 again, with the device on the far side of the RPC protocol (section 3.4).
 TEST(ControlboardClient, PaperSection33ThroughTheNetworkWrappers) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "../bottle/vector_cases.hpp"
+#include "../support/in_process_board.hpp"
 
 #include <cmath>
 #include <memory>
@@ -23,24 +24,8 @@ using namespace robogene::dev;
 
 namespace {
 
-// A three-axis test_motor on a manual clock, its server, and a client whose every request and
-// reply goes through the binary form.
-struct Remote {
-  PolyDriver device;
-  std::unique_ptr<ControlboardServer> server;
-  std::unique_ptr<ControlboardClient> client;
-  ISimulationClock* clock = nullptr;
-
-  Remote() {
-    EXPECT_TRUE(device.open(Property::from_command_line({"--device", "test_motor", "--axes", "3", "--clock", "manual"})));
-    DeviceDriver* driver = nullptr;
-    EXPECT_TRUE(device.view(driver) && device.view(clock));
-    server = std::make_unique<ControlboardServer>(*driver);
-    client = std::make_unique<ControlboardClient>([this](const Bottle& req, Bottle& reply) {
-      reply = Bottle::from_bytes(server->respond(Bottle::from_bytes(req.to_bytes())).to_bytes());
-      return true;
-    });
-  }
+// The in-process board (support/in_process_board.hpp) with the questions these tests ask.
+struct Remote : robogene::test::InProcessBoard {
   std::string ask(const std::string& text) { return server->respond(Bottle::from_text(text)).to_text(); }
   bool enabled(PidType t, int j) {
     bool on = false;
