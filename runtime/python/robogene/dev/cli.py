@@ -13,7 +13,7 @@ from __future__ import annotations
 import signal
 import sys
 import threading
-from typing import List, Optional, Sequence
+from typing import Optional, Sequence
 
 from .device_driver import DeviceDriver
 from .poly_driver import PolyDriver
@@ -41,23 +41,16 @@ def device_config(args: Sequence[str]) -> Property:
     return config
 
 
-def _wait_for_shutdown_signal() -> int:
-    """Blocks until SIGINT or SIGTERM; returns the signal number."""
-    received: List[int] = []
+def _wait_for_shutdown_signal() -> None:
+    """Blocks until SIGINT or SIGTERM."""
     done = threading.Event()
-
-    def handler(signum, _frame):
-        received.append(signum)
-        done.set()
-
-    previous = {s: signal.signal(s, handler) for s in (signal.SIGINT, signal.SIGTERM)}
+    previous = {s: signal.signal(s, lambda _signum, _frame: done.set()) for s in (signal.SIGINT, signal.SIGTERM)}
     try:
         while not done.wait(0.5):  # a timed wait lets the handler run on the main thread
             pass
     finally:
         for s, h in previous.items():
             signal.signal(s, h)
-    return received[0]
 
 
 def run(args: Sequence[str]) -> int:
