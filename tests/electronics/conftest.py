@@ -18,6 +18,7 @@ FAB = pathlib.Path(os.environ.get("ELEC_FAB", ROOT / "build" / "fab" / "electron
 GENERATOR = ROOT / "hardware" / "electronics" / "generator"
 
 sys.path.insert(0, str(GENERATOR))
+sys.path.insert(0, str(ROOT / "hardware" / "electronics" / "checks"))
 
 
 @pytest.fixture(scope="session")

@@ -113,7 +113,8 @@ def test_schematic_pdf_is_a_real_pdf(fab):
 
 
 # Footprints whose 3-D model KiCad's kicad-packages3d does not ship (fetch-3d-models.sh warns).
-MODELS_NOT_IN_KICAD = ("JST_VH_B2P-VH_1x02_P3.96mm_Vertical", "Fuse_Littelfuse-NANO2-451_453")
+MODELS_NOT_IN_KICAD = ("JST_VH_B2P-VH_1x02_P3.96mm_Vertical", "Fuse_Littelfuse-NANO2-451_453",
+                       "R_Shunt_Vishay_WSK2512_6332Metric_T1.19mm")
 
 
 def test_step_holds_the_board_and_every_available_component_model(fab):

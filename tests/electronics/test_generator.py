@@ -104,4 +104,4 @@ def test_sexpr_errors_name_the_place(text, where):
 
 def test_project_json_is_loadable():
     pro = json.loads((BOARD_DIR / f"{NAME}.kicad_pro").read_text())
-    assert {c["name"] for c in pro["net_settings"]["classes"]} == {"Default", "Power", "Motor", "Supply"}
+    assert {c["name"] for c in pro["net_settings"]["classes"]} == {"Default", "Chain", "Input", "Power", "Motor", "Supply"}

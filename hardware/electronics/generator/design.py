@@ -9,6 +9,9 @@ head. Nets named here become local labels; GND, +3V3, +5V and +12V are power sym
 from dataclasses import dataclass, field
 
 POWER_NETS = ("GND", "+3V3", "+5V", "+12V")
+# The board's revision: the schematic's and the board's title blocks, the silkscreen, the Gerber job file and
+# the catalog's bare-board entry all carry it (tests/electronics/test_revision.py reads them all).
+REVISION = "C"
 NC = None  # pin deliberately left open: gets a no-connect flag
 
 
@@ -42,29 +45,40 @@ JST_VH2 = "Connector_JST:JST_VH_B2P-VH_1x02_P3.96mm_Vertical"
 def _power_parts():
     b = "power"
     return [
+        # Daisy chain: J1 takes the supply in, J5 passes it on to the next board. The pass-through is the
+        # raw input (before this board's fuse), so each board's fuse carries only its own current.
         Part("J1", "Connector_Generic:Conn_01x02", "12V_IN", JST_VH2, "B2P-VH(LF)(SN)", "JST",
-             {"1": "VIN_RAW", "2": "GND"}, b, "supply input, 12 V"),
+             {"1": "VIN_RAW", "2": "GND"}, b, "supply input, 12 V (daisy chain in)"),
+        Part("J5", "Connector_Generic:Conn_01x02", "12V_OUT", JST_VH2, "B2P-VH(LF)(SN)", "JST",
+             {"1": "VIN_RAW", "2": "GND"}, b, "supply output to the next board (daisy chain out)"),
         Part("F1", "Device:Fuse", "5A", "Fuse:Fuse_Littelfuse-NANO2-451_453", "0451005.MRL", "Littelfuse",
              {"1": "VIN_RAW", "2": "VIN_FUSED"}, b),
-        Part("D1", "Diode:SMAJ15A", "SMAJ15A", "Diode_SMD:D_SMA", "SMAJ15A", "Littelfuse",
-             {"1": "VIN_FUSED", "2": "GND"}, b, "input TVS"),
-        # Reverse-polarity protection: P-MOSFET in the positive rail, gate pulled to GND, Vgs clamped.
+        # Reverse-polarity protection first: P-MOSFET in the positive rail, drain to the input, gate pulled
+        # to GND, Vgs clamped. A reversed supply leaves it off (its body diode is reversed too), so no current
+        # flows and the fuse survives. The TVS sits after it, on +12V: in rev B it sat before the FET, and a
+        # reversed supply forward-biased it through the soldered fuse.
         Part("Q1", "Transistor_FET:DMP3013SFV", "DMP3013SFV", "Package_SON:Diodes_PowerDI3333-8",
              "DMP3013SFV-7", "Diodes Incorporated",
              {"1": "+12V", "2": "+12V", "3": "+12V", "4": "Q1_GATE", "5": "VIN_FUSED"}, b),
         _r("R1", "10k", "Q1_GATE", "GND", b, "RC0603FR-0710KL"),
         Part("D2", "Device:D_Zener", "BZT52C10", "Diode_SMD:D_SOD-123", "BZT52C10-7-F", "Diodes Incorporated",
              {"1": "+12V", "2": "Q1_GATE"}, b, "gate clamp"),
+        Part("D1", "Diode:SMAJ15A", "SMAJ15A", "Diode_SMD:D_SMA", "SMAJ15A", "Littelfuse",
+             {"1": "+12V", "2": "GND"}, b, "TVS, after the reverse-polarity FET"),
         Part("C1", "Device:C_Polarized", "47u/25V", "Capacitor_SMD:CP_Elec_6.3x7.7", "EEE-FK1E470P", "Panasonic",
              {"1": "+12V", "2": "GND"}, b),
         _r("R2", "47k", "+12V", "VBUS_SENSE", b, "RC0603FR-0747KL"),
         _r("R3", "10k", "VBUS_SENSE", "GND", b, "RC0603FR-0710KL"),
         _c("C2", "100n", "VBUS_SENSE", "GND", b, "GCM188R71H104KA57D"),
-        # 12 V -> 5 V buck (encoders), then 5 V -> 3.3 V LDO (logic, CAN, current amplifiers).
+        # The buck takes its input through a ferrite bead: it keeps the drivers' switching current off the
+        # buck, and it lets the motor rail (+12V, wide copper) and the buck's small-pad input be separate nets.
+        Part("FB1", "Device:FerriteBead_Small", "600R@100MHz", "Inductor_SMD:L_0805_2012Metric", "BLM21PG601SN1D",
+             "Murata", {"1": "+12V", "2": "VIN_BUCK"}, b, "buck input filter"),
+        # 12 V -> 5 V buck (encoders, level shifter), then 5 V -> 3.3 V LDO (logic, CAN, current amplifiers).
         Part("U2", "Regulator_Switching:AP63205WU", "AP63205WU", "Package_TO_SOT_SMD:TSOT-23-6",
              "AP63205WU-7", "Diodes Incorporated",
-             {"1": "+5V", "2": "+12V", "3": "+12V", "4": "GND", "5": "SW_5V", "6": "BST_5V"}, b),
-        _c("C3", "10u/25V", "+12V", "GND", b, "GRM31CR61E106KA12L", "Capacitor_SMD:C_1206_3216Metric"),
+             {"1": "+5V", "2": "VIN_BUCK", "3": "VIN_BUCK", "4": "GND", "5": "SW_5V", "6": "BST_5V"}, b),
+        _c("C3", "10u/25V", "VIN_BUCK", "GND", b, "GRM31CR61E106KA12L", "Capacitor_SMD:C_1206_3216Metric"),
         _c("C4", "100n", "BST_5V", "SW_5V", b, "GCM188R71H104KA57D"),
         Part("L1", "Device:L", "4.7u", "Inductor_SMD:L_Bourns-SRN4018", "SRN4018-4R7M", "Bourns",
              {"1": "SW_5V", "2": "+5V"}, b),
@@ -83,8 +97,8 @@ def _mcu_parts():
     pins = {
         "1": "+3V3", "17": "+3V3", "15": "+3V3", "16": "GND", "32": "GND", "14": "GND",
         "4": "NRST", "2": "HSE_IN", "3": "HSE_OUT", "13": "VBUS_SENSE",
-        "26": "AEA_CLK", "27": "AEA_DO", "28": "M2_AEA_CS", "29": "M2_QA", "30": "M2_QB", "31": "BOOT0",
-        "5": "M1_QA", "6": "M1_QB", "7": "M2_IN1", "8": "M2_IN2", "9": "LED", "10": NC,
+        "26": "AEA_CLK", "27": "AEA_DO", "28": "AEA_MOSI", "29": "M2_QA", "30": "M2_QB", "31": "BOOT0",
+        "5": "M1_QA", "6": "M1_QB", "7": "M2_IN1", "8": "M2_IN2", "9": "LED", "10": "M2_AEA_CS",
         "11": "M1_ISENSE", "12": "M2_ISENSE", "18": "M1_IN1", "19": "M1_IN2", "20": "MOT_FAULT",
         "21": "CAN_RX", "22": "CAN_TX", "23": "SWDIO", "24": "SWCLK", "25": "M1_AEA_CS",
     }
@@ -104,10 +118,14 @@ def _mcu_parts():
         _r("R5", "1k", "LED", "LED_A", b, "RC0603FR-071KL"),
         Part("D3", "Device:LED", "green", "LED_SMD:LED_0603_1608Metric", "150060GS75000", "Wurth Elektronik",
              {"1": "GND", "2": "LED_A"}, b, "status LED"),
-        Part("J4", "Connector:Conn_ARM_JTAG_SWD_10", "SWD", "Connector_PinHeader_1.27mm:PinHeader_2x05_P1.27mm_Vertical",
-             "FTSH-105-01-F-DV-K", "Samtec",
-             {"1": "+3V3", "2": "SWDIO", "3": "GND", "4": "SWCLK", "5": "GND", "6": NC, "7": NC, "8": NC,
-              "9": "GND", "10": "NRST"}, b, "programming header (SWD)"),
+        # Programming and recovery on a right-angle header at the board's edge, reachable from the side when
+        # the boards are stacked. Pins 1-5 follow ST-LINK's 6-pin SWD connector (VDD, SWCLK, GND, SWDIO, NRST);
+        # pin 6 is BOOT0 (an ST-LINK pin 6 is SWO, a probe input, so a probe never drives it). Tie pin 6 to
+        # pin 1 and pulse NRST to start the STM32G4's ROM bootloader, which also listens on FDCAN1 (PA11/PA12).
+        Part("J4", "Connector_Generic:Conn_01x06", "SWD/BOOT", "Connector_PinHeader_2.54mm:PinHeader_1x06_P2.54mm_Horizontal",
+             "TSW-106-08-G-S-RA", "Samtec",
+             {"1": "+3V3", "2": "SWCLK", "3": "GND", "4": "SWDIO", "5": "NRST", "6": "BOOT0"}, b,
+             "programming header at the edge (SWD, reset, BOOT0)"),
     ]
 
 
@@ -145,18 +163,24 @@ def _axis_parts(n, first):
               "6": m + "OUT1", "8": m + "OUT2", "7": "GND"}, b, f"H-bridge, motor {n}"),
         _c(f"C{20 + 10 * n}", "10u/25V", "+12V", "GND", b, "GRM31CR61E106KA12L", "Capacitor_SMD:C_1206_3216Metric"),
         _c(f"C{21 + 10 * n}", "100n", "+12V", "GND", b, "GCM188R71H104KA57D"),
-        _r(f"R{20 + 10 * n}", "20m", m + "OUT1", m + "MA", b, "WSL1206R0200FEA", "Resistor_SMD:R_1206_3216Metric", "Vishay"),
+        # Four-terminal (Kelvin) shunt: the motor current flows through pads 1 and 4 on wide copper; the
+        # amplifier reads pads 2 and 3 on their own thin nets, so no motor current has to pass the
+        # amplifier's 0.65 mm-pitch pins (rev B ran it there, on 0.45 mm tracks).
+        Part(f"R{20 + 10 * n}", "Device:R_Shunt", "20m", "Resistor_SMD:R_Shunt_Vishay_WSK2512_6332Metric_T1.19mm",
+             "WSK2512R0200FEA", "Vishay", {"1": m + "OUT1", "4": m + "MA", "2": m + "SNS_P", "3": m + "SNS_N"}, b,
+             f"current shunt, motor {n} (Kelvin)"),
         # Inline (motor-lead) sensing gives the signed motor current in every decay mode;
         # REF1=3V3, REF2=GND puts zero current at mid-scale.
         Part(u_amp, "Amplifier_Current:INA240A1PW", "INA240A1PW", "Package_SO:TSSOP-8_4.4x3mm_P0.65mm",
              "INA240A1PWR", "Texas Instruments",
-             {"1": "GND", "4": "GND", "2": m + "OUT1", "3": m + "MA", "5": "+3V3", "6": "GND", "7": "+3V3",
+             {"1": "GND", "4": "GND", "2": m + "SNS_P", "3": m + "SNS_N", "5": "+3V3", "6": "GND", "7": "+3V3",
               "8": m + "ISENSE"}, b, f"current sense amplifier, motor {n}"),
         _c(f"C{22 + 10 * n}", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
         Part(f"J{10 + 10 * n}", "Connector_Generic:Conn_01x02", "MOTOR", JST_VH2, "B2P-VH(LF)(SN)", "JST",
              {"1": m + "MA", "2": m + "OUT2"}, b, f"motor {n}"),
         Part(f"J{11 + 10 * n}", "Connector_Generic:Conn_01x04", "QENC", JST_PH.format(n=4), "B4B-PH-K-S(LF)(SN)", "JST",
-             {"1": "+5V", "2": m + "ENC_A", "3": m + "ENC_B", "4": "GND"}, b, f"motor encoder {n} (quadrature)"),
+             {"1": "+5V", "2": m + "ENC_A", "3": m + "ENC_B", "4": "GND"}, b, f"motor encoder {n} (quadrature)",
+             extra={"external": {"2": ("faulhaber-IE2-512", "A"), "3": ("faulhaber-IE2-512", "B")}}),
         # The encoder runs on 5 V and drives its outputs to 5 V. The MCU pins must not see that: PA0/PA1
         # are 3.6 V-tolerant analog pins, and no pin may be driven while 3.3 V is down. The buffer runs on
         # 3.3 V, its inputs take 5.5 V with or without supply (Ioff), and its Schmitt inputs square up
@@ -167,15 +191,20 @@ def _axis_parts(n, first):
         _c(f"C{23 + 10 * n}", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
         _r(f"R{21 + 10 * n}", "10k", m + "ENC_A", "GND", b, "RC0603FR-0710KL"),
         _r(f"R{22 + 10 * n}", "10k", m + "ENC_B", "GND", b, "RC0603FR-0710KL"),
-        Part(f"J{12 + 10 * n}", "Connector_Generic:Conn_01x05", "AEA", JST_PH.format(n=5), "B5B-PH-K-S(LF)(SN)", "JST",
-             {"1": "+5V", "2": "AEA_CLK", "3": m + "AEA_CS", "4": "AEA_ENC_DO", "5": "GND"}, b,
-             f"joint encoder {n} (absolute, SSI)"),
+        # The absolute encoder (AS5048A, SPI mode, 5 V) needs CLK, CS and MOSI at 5 V logic (VIH 0.7 VDD =
+        # 3.5 V): they come from the 5 V level shifter U12. MOSI idles high, which is the read-angle command.
+        Part(f"J{12 + 10 * n}", "Connector_Generic:Conn_01x06", "AEA", JST_PH.format(n=6), "B6B-PH-K-S(LF)(SN)", "JST",
+             {"1": "+5V", "2": "AEA_CLK_5V", "3": m + "AEA_CS_5V", "4": "AEA_ENC_DO", "5": "AEA_MOSI_5V", "6": "GND"}, b,
+             f"joint encoder {n} (absolute, AS5048A SPI)", extra={"external": {
+                 "2": ("ams-AS5048A", "CLK"), "3": ("ams-AS5048A", "CSn"), "4": ("ams-AS5048A", "MISO"),
+                 "5": ("ams-AS5048A", "MOSI")}}),
     ]
 
 
 def _aea_parts():
-    """The absolute encoders' shared SSI data line (each encoder drives it while its chip select is low)
-    reaches PB4 through a single Schmitt buffer of the same kind as the quadrature encoders' buffers."""
+    """The absolute encoders' shared data line (each encoder drives it while its chip select is low)
+    reaches PB4 through a single Schmitt buffer of the same kind as the quadrature encoders' buffers; their
+    clock, chip selects and MOSI leave the MCU through a 3.3 V -> 5 V level shifter."""
     b = "aea"
     return [
         # The encoders run on 5 V and drive DO to 5 V. PB4 is 5 V-tolerant only while 3.3 V is up, and the
@@ -187,6 +216,19 @@ def _aea_parts():
              "absolute-encoder data buffer (5 V in, 3.3 V out)"),
         _c("C17", "100n", "+3V3", "GND", b, "GCM188R71H104KA57D"),
         _r("R8", "10k", "AEA_ENC_DO", "GND", b, "RC0603FR-0710KL"),
+        # 3.3 V -> 5 V for the encoders' inputs: a 74AHCT125 on 5 V has TTL input levels (VIH 2.0 V), so the
+        # MCU's 3.3 V outputs drive it, and its outputs swing to 5 V (AS5048A VIH 3.5 V). Always enabled.
+        Part("U12", "74xx:74AHCT125", "74AHCT125", "Package_SO:TSSOP-14_4.4x5mm_P0.65mm", "SN74AHCT125PWR",
+             "Texas Instruments",
+             {"1": "GND", "2": "AEA_CLK", "3": "AEA_CLK_5V", "4": "GND", "5": "M1_AEA_CS", "6": "M1_AEA_CS_5V",
+              "10": "GND", "9": "M2_AEA_CS", "8": "M2_AEA_CS_5V", "13": "GND", "12": "AEA_MOSI", "11": "AEA_MOSI_5V",
+              "14": "+5V", "7": "GND"}, b, "encoder level shifter (3.3 V in, 5 V out)"),
+        _c("C18", "100n", "+5V", "GND", b, "GCM188R71H104KA57D"),
+        # While the MCU pins are still inputs (reset, boot) the pull-ups keep both chip selects inactive and
+        # MOSI high; the level shifter's CMOS inputs never float.
+        _r("R9", "10k", "+3V3", "M1_AEA_CS", b, "RC0603FR-0710KL"),
+        _r("R10", "10k", "+3V3", "M2_AEA_CS", b, "RC0603FR-0710KL"),
+        _r("R11", "10k", "+3V3", "AEA_MOSI", b, "RC0603FR-0710KL"),
     ]
 
 

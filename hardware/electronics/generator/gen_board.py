@@ -5,14 +5,18 @@
 
 Placement: connectors, ICs and mounting holes sit at fixed positions (ANCHORS); every other part is
 placed by a deterministic search for the free spot nearest to the pads it connects to.
-Layers: F.Cu signals, In1.Cu GND plane, In2.Cu +12V plane, B.Cu signals. Run with KiCad's python:
+Layers (a declared 4-layer stackup, 2 oz outer and 1 oz inner copper): F.Cu parts, signals and the wide current paths, In1.Cu GND
+plane, In2.Cu signals and GND pour, B.Cu signals and GND pour. Run with KiCad's python:
     /usr/bin/python3 gen_board.py NETLIST.net OUT.kicad_pcb
 """
 import math
+import re
 import os
 import sys
 
 import pcbnew
+
+import design
 
 from sexpr import find, find1, parse
 from kicad_lib import FOOTPRINT_DIR
@@ -25,26 +29,34 @@ GAP = 0.3                   # courtyard to courtyard
 # ref: (x, y, rotation degrees) relative to the board's top-left corner
 ANCHORS = {
     "H1": (4.2, 4.2, 0), "H2": (W - 4.2, 4.2, 0), "H3": (4.2, H - 4.2, 0), "H4": (W - 4.2, H - 4.2, 0),
-    "J1": (5.0, 17.0, 90), "J2": (4.0, 37.0, 90), "J3": (4.0, 48.0, 90), "JP1": (12.5, 49.0, 0),
+    # daisy-chain power in (J1) and out (J5): pin 1 of each face the other, so the pass-through is short
+    "J1": (5.0, 17.0, 90), "J5": (6.0, 22.3, 270),
+    "J2": (4.0, 37.0, 90), "J3": (4.0, 48.0, 90), "JP1": (12.5, 49.0, 0),
     "U4": (17.0, 40.0, 0), "Q1": (22.0, 12.0, 0), "F1": (15.0, 8.0, 0), "D1": (15.0, 17.0, 0),
-    "U2": (33.0, 8.0, 0), "L1": (40.0, 8.0, 0), "U3": (48.0, 8.0, 0), "J4": (58.0, 2.5, 0),
+    "U2": (33.0, 8.0, 0), "L1": (40.0, 8.0, 0), "U3": (45.5, 8.0, 0),
+    # right-angle SWD/BOOT0 header: its pins point at the top edge, where a cable reaches it in the stack
+    "J4": (50.5, 11.3, 90),
     "U1": (44.0, 31.0, 0), "Y1": (34.0, 29.5, 0),
-    "U5": (68.0, 15.0, 0), "U6": (68.0, 24.5, 0), "J20": (84.0, 18.0, 90),
+    "U5": (68.0, 16.5, 0), "U6": (68.0, 24.5, 0), "J20": (84.0, 18.0, 90),
     "U7": (68.0, 37.0, 0), "U8": (68.0, 46.5, 0), "J30": (84.0, 40.0, 90),
-    "J21": (22.0, 55.0, 0), "J22": (34.0, 55.0, 0), "J31": (49.0, 55.0, 0), "J32": (61.0, 55.0, 0),
+    # the Kelvin shunts right of and below their driver, far enough right that the OUT1 track passes
+    # between the driver's VM pin and the shunt's sense pad (placed by the search, one sat in the way)
+    "R30": (76.0, 22.5, 90), "R40": (76.0, 43.0, 90),
+    "J21": (20.0, 55.0, 0), "J22": (31.5, 55.0, 0), "J31": (47.0, 55.0, 0), "J32": (58.5, 55.0, 0),
     # encoder buffers between their connector and the MCU: inputs face the connector, outputs the MCU
     "U9": (31.0, 45.0, 90), "U10": (53.0, 45.0, 90),
-    # the absolute encoders' data buffer, between motor 1's AEA connector (J22) and the MCU
-    "U11": (42.0, 45.0, 90),
+    # the absolute encoders' data buffer and their 3.3 V -> 5 V level shifter, between the MCU and J22/J32
+    "U11": (42.0, 45.0, 90), "U12": (47.5, 46.0, 90),
 }
 POWER_NETS = {"GND", "+12V", "+3V3", "+5V"}
+REVISION_TEXT_AT = (W / 2, 21.5)  # bottom silkscreen, clear of the through-hole pads
 # Parts joined to the rest only by supply nets (decoupling, bulk) go next to the part they serve; so do
 # the encoder inputs' pull-downs, which the many GND pads would otherwise pull towards the board centre.
 NEAR = {"C1": "Q1", "R1": "Q1", "D2": "Q1", "C3": "U2", "C4": "U2", "C5": "L1", "C6": "L1", "C7": "U3",
         "C8": "U3", "C9": "U1", "C10": "U1", "C11": "U1", "C12": "U1", "C16": "U4", "D4": "U4",
         "C30": "U5", "C31": "U5", "C32": "U6", "C40": "U7", "C41": "U7", "C42": "U8", "R6": "JP1",
         "C33": "U9", "C43": "U10", "R31": "U9", "R32": "U9", "R41": "U10", "R42": "U10",
-        "C17": "U11", "R8": "U11"}
+        "C17": "U11", "R8": "U11", "FB1": "U2", "C18": "U12", "R9": "U12", "R10": "U12", "R11": "U12"}
 
 
 def mm(v):
@@ -148,6 +160,62 @@ def add_zone(board, net, layer, priority=0):
     return zone
 
 
+# The declared stackup (1.6 mm, 4 layers): 2 oz (70 um) finished copper outside, where the motor and supply
+# currents run, 1 oz (35 um) inside. The copper check (tests/electronics/test_copper_capacity.py) takes each
+# layer's thickness from here. 2 oz lets 0.7 mm tracks carry the driver's 3.6 A, narrow enough to leave the
+# DRV8872's adjacent 1.27 mm-pitch VM and OUT1 pins side by side (two 1.2 mm tracks, what 1 oz needs, cannot).
+STACKUP = [("F.Cu", "copper", 0.07), ("dielectric 1", "prepreg", 0.2104), ("In1.Cu", "copper", 0.035),
+           ("dielectric 2", "core", 0.9492), ("In2.Cu", "copper", 0.035), ("dielectric 3", "prepreg", 0.2104),
+           ("B.Cu", "copper", 0.07)]
+
+
+def declare_stackup(path):
+    """Write the stackup into the saved board's setup section (pcbnew's Python API does not expose the
+    stackup descriptor); pcbnew reads it back and keeps it on every later save."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    if "(stackup" in text:
+        raise RuntimeError(f"{path}: already has a stackup")
+    rows = ['\t\t\t(layer "F.SilkS"\n\t\t\t\t(type "Top Silk Screen")\n\t\t\t)',
+            '\t\t\t(layer "F.Paste"\n\t\t\t\t(type "Top Solder Paste")\n\t\t\t)',
+            '\t\t\t(layer "F.Mask"\n\t\t\t\t(type "Top Solder Mask")\n\t\t\t\t(thickness 0.01)\n\t\t\t)']
+    for name, kind, thickness in STACKUP:
+        if kind == "copper":
+            rows.append(f'\t\t\t(layer "{name}"\n\t\t\t\t(type "copper")\n\t\t\t\t(thickness {thickness})\n\t\t\t)')
+        else:
+            rows.append(f'\t\t\t(layer "{name}"\n\t\t\t\t(type "{kind}")\n\t\t\t\t(thickness {thickness})\n'
+                        f'\t\t\t\t(material "FR4")\n\t\t\t\t(epsilon_r 4.5)\n\t\t\t\t(loss_tangent 0.02)\n\t\t\t)')
+    rows += ['\t\t\t(layer "B.Mask"\n\t\t\t\t(type "Bottom Solder Mask")\n\t\t\t\t(thickness 0.01)\n\t\t\t)',
+             '\t\t\t(layer "B.Paste"\n\t\t\t\t(type "Bottom Solder Paste")\n\t\t\t)',
+             '\t\t\t(layer "B.SilkS"\n\t\t\t\t(type "Bottom Silk Screen")\n\t\t\t)',
+             '\t\t\t(copper_finish "ENIG")\n\t\t\t(dielectric_constraints no)']
+    block = "\t\t(stackup\n" + "\n".join(rows) + "\n\t\t)\n"
+    text, n = re.subn(r"(\n\t\(setup\n)", lambda m: m.group(1) + block, text, count=1)
+    if n != 1:
+        raise RuntimeError(f"{path}: no (setup ...) section to put the stackup in")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def add_revision(board, box_of):
+    """The revision in the board's title block (the Gerber job file takes it from there) and on the
+    silkscreen, on the bottom side, which carries no parts."""
+    tb = board.GetTitleBlock()
+    tb.SetTitle("Robogene head motor-control board (2 DC motors, CAN)")
+    tb.SetRevision(design.REVISION)
+    tb.SetDate("2026-11-26")
+    tb.SetCompany("Robogene contributors")
+    tb.SetComment(0, "CERN-OHL-S-2.0")
+    text = pcbnew.PCB_TEXT(board)
+    text.SetText(f"ROBOGENE MOTOR BOARD REV {design.REVISION}")
+    text.SetLayer(pcbnew.B_SilkS)
+    text.SetMirrored(True)
+    text.SetTextSize(pcbnew.VECTOR2I(mm(1.2), mm(1.2)))
+    text.SetTextThickness(mm(0.18))
+    text.SetPosition(pt(*REVISION_TEXT_AT))
+    board.Add(text)
+
+
 def build(netlist, out):
     comps, nets = read_netlist(netlist)
     board = pcbnew.NewBoard(out)
@@ -208,9 +276,10 @@ def build(netlist, out):
 
     add_outline(board)
     add_zone(board, netinfo["GND"], pcbnew.In1_Cu)
-    add_zone(board, netinfo["+12V"], pcbnew.In2_Cu)
+    add_revision(board, box_of={r: b for r, b in boxes})
     board.BuildConnectivity()
     pcbnew.SaveBoard(out, board)
+    declare_stackup(out)
     return board
 
 

@@ -12,14 +12,23 @@ import sys
 import design
 
 NET_CLASSES = [
-    # name, track width, clearance, via diameter, via drill, nets
+    # name, track width, clearance, via diameter, via drill, nets. The widths carry each net's current on
+    # the declared 2 oz outer copper at a 20 degC rise (IPC-2221; tests/electronics/test_copper_capacity.py
+    # checks the routed board), and route.py keeps these classes on F.Cu, so no via sits in their path.
     ("Default", 0.25, 0.2, 0.6, 0.3, []),
     # local-label nets carry the root sheet's "/" prefix
-    ("Power", 0.8, 0.2, 0.8, 0.4, ["+12V", "/VIN_RAW", "/VIN_FUSED", "/SW_5V", "/M1_OUT2", "/M2_OUT2"]),
-    # the shunt side of the motor path also lands on the current amplifier's 0.65 mm-pitch pins
-    ("Motor", 0.45, 0.2, 0.8, 0.4, ["/M1_OUT1", "/M1_MA", "/M2_OUT1", "/M2_MA"]),
+    # the daisy chain's pass-through: every board's current, J1 -> J5 (7.8 A for the head; 1.9 mm: 8.5 A)
+    ("Chain", 1.9, 0.25, 0.8, 0.4, ["/VIN_RAW"]),
+    # fuse to the reverse-polarity FET: up to the 5 A fuse rating (1.0 mm: 5.3 A)
+    ("Input", 1.0, 0.2, 0.8, 0.4, ["/VIN_FUSED"]),
+    # each H-bridge's supply and motor leads: the DRV8872's 3.6 A (0.7 mm: 4.1 A); two such tracks fit
+    # side by side on the driver's 1.27 mm-pitch pins
+    ("Motor", 0.7, 0.2, 0.8, 0.4, ["+12V", "/M1_OUT1", "/M1_MA", "/M1_OUT2", "/M2_OUT1", "/M2_MA", "/M2_OUT2"]),
+    ("Power", 0.8, 0.2, 0.8, 0.4, ["/SW_5V", "/VIN_BUCK"]),
     ("Supply", 0.4, 0.2, 0.6, 0.3, ["+5V", "+3V3"]),
 ]
+# Net classes routed on F.Cu only (route.py): their copper is sized for outer-layer copper and no via.
+OUTER_ONLY = ("Chain", "Input", "Motor")
 
 
 def used_libs():
@@ -49,7 +58,7 @@ def project(name):
                         "bus_width": 12, "wire_width": 6, "line_style": 0,
                         "pcb_color": "rgba(0, 0, 0, 0.000)", "schematic_color": "rgba(0, 0, 0, 0.000)",
                         "priority": 2147483647 if cname == "Default" else len(classes)})
-    classes.sort(key=lambda c: c["name"])  # the order pcbnew writes them in
+    classes.sort(key=lambda c: (c["name"] != "Default", c["name"]))  # the order pcbnew writes them in
     patterns = [{"netclass": c[0], "pattern": n} for c in NET_CLASSES for n in c[5]]
     return {
         "board": {"design_settings": {
@@ -62,7 +71,7 @@ def project(name):
                       "min_connection": 0.0, "min_resolved_spokes": 2, "solder_mask_to_copper_clearance": 0.0,
                       "use_height_for_length_calcs": True, "min_microvia_diameter": 0.2,
                       "min_microvia_drill": 0.1, "min_groove_width": 0.0},
-            "track_widths": [0.0, 0.25, 0.4, 0.8], "via_dimensions": [{"diameter": 0.0, "drill": 0.0}]}},
+            "track_widths": [0.0, 0.25, 0.4, 0.7, 0.8, 1.0, 1.9], "via_dimensions": [{"diameter": 0.0, "drill": 0.0}]}},
         "meta": {"filename": name + ".kicad_pro", "version": 3},
         "net_settings": {"classes": classes, "meta": {"version": 4}, "net_colors": None,
                          "netclass_assignments": None, "netclass_patterns": patterns},
