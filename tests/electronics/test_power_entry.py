@@ -3,6 +3,8 @@
 """The supply entry on the design's netlist: a reversed supply meets the reverse-polarity FET before any
 diode (rev B put the TVS first: reversed, it conducted through the soldered fuse and blew it), and the board
 passes the supply on to the next one through a second connector rated for the chain's current."""
+import dataclasses
+
 import yaml
 
 import design
@@ -40,13 +42,23 @@ def _diodes(parts):
     return [p for p in parts.values() if p.lib_id.startswith("Diode:") or p.lib_id.startswith("Device:D")]
 
 
+def _diodes_before_the_fet(parts):
+    exposed = _input_side_nets(parts)
+    return [d.ref for d in _diodes(parts) if set(d.pins.values()) & exposed]
+
+
 def test_no_diode_sits_before_the_reverse_polarity_fet():
     """Reversed, the input is negative against GND: any diode between an input-side net and GND (a TVS, a
     clamp) would conduct through the fuse."""
     parts = _parts()
-    exposed = _input_side_nets(parts)
-    offenders = [d.ref for d in _diodes(parts) if set(d.pins.values()) & exposed]
-    assert offenders == [], f"diodes on the unprotected input {sorted(exposed)}: {offenders}"
+    assert _diodes_before_the_fet(parts) == [], f"diodes on the unprotected input {sorted(_input_side_nets(parts))}"
+
+
+def test_the_order_check_fails_on_rev_b_order():
+    """A broken variant: the TVS back on the fuse's output, before the FET, as in rev B."""
+    parts = _parts()
+    parts["D1"] = dataclasses.replace(parts["D1"], pins={"1": "VIN_FUSED", "2": "GND"})
+    assert _diodes_before_the_fet(parts) == ["D1"]
 
 
 def test_the_fet_blocks_a_reversed_supply():
@@ -66,6 +78,12 @@ def test_the_fet_blocks_a_reversed_supply():
 def test_two_power_connectors_for_the_daisy_chain():
     connectors = _power_connectors(_parts())
     assert len(connectors) == 2, [c.ref for c in connectors]
+
+
+def test_the_chain_check_fails_without_the_output_connector():
+    parts = _parts()
+    del parts["J5"]
+    assert len(_power_connectors(parts)) == 1
 
 
 def test_power_connectors_are_rated_for_the_chain_current():

@@ -6,6 +6,8 @@ header in the middle of the board, buried under the next board, and no BOOT0 acc
 start the STM32G4's ROM bootloader, which listens on FDCAN1 at PA11/PA12, where the transceiver is."""
 import math
 
+import pytest
+
 import design
 from conftest import PCB
 from sexpr import find, find1, parse
@@ -66,7 +68,23 @@ def _courtyard(fp):
 
 
 def test_the_header_is_right_angle_at_the_board_edge_with_a_clear_path():
-    board = parse(PCB.read_text(), str(PCB))
+    _check_edge_header(parse(PCB.read_text(), str(PCB)))
+
+
+def test_the_edge_check_fails_on_a_header_moved_inwards():
+    """A broken variant: the same header 10 mm further into the board."""
+    text = PCB.read_text()
+    start = text.index('(property "Reference" "J4"')
+    fp_start = text.rindex("\n\t(footprint ", 0, start)
+    at = text.index("\t\t(at ", fp_start)
+    end = text.index(")", at)
+    x, y, *rot = text[at + len("\t\t(at "):end].split()
+    moved = text[:at] + f"\t\t(at {x} {float(y) + 10} {' '.join(rot)}".rstrip() + text[end:]
+    with pytest.raises(AssertionError, match="from the nearest"):
+        _check_edge_header(parse(moved, "moved"))
+
+
+def _check_edge_header(board):
     fp = _footprint(board, HEADER)
     assert "Horizontal" in fp[1], f"{HEADER} is {fp[1]}: a vertical header is buried once the boards are stacked"
     x0, y0, x1, y1 = _outline(board)

@@ -36,11 +36,23 @@ def test_board_silkscreen():
     assert revs == [design.REVISION], texts
 
 
-def test_catalog_bare_board_entry():
-    parts = yaml.safe_load((ROOT / "hardware" / "bom" / "catalog.yaml").read_text())["parts"]
+def _catalog_revision(catalog_text):
+    parts = yaml.safe_load(catalog_text)["parts"]
     params = yaml.safe_load((ROOT / "hardware" / "head-parameters.yaml").read_text())
     mpn = parts[params["boards"]["pcb"]]["mpn"]
-    assert re.search(r"\brev (\S+)$", mpn).group(1) == design.REVISION, mpn
+    m = re.search(r"\brev (\S+)$", mpn)
+    return m.group(1) if m else None
+
+
+def test_catalog_bare_board_entry():
+    assert _catalog_revision((ROOT / "hardware" / "bom" / "catalog.yaml").read_text()) == design.REVISION
+
+
+def test_the_catalog_check_fails_on_a_stale_entry():
+    """A broken variant: the catalog as rev B left it."""
+    text = (ROOT / "hardware" / "bom" / "catalog.yaml").read_text()
+    stale = text.replace(f"robogene-motor-board rev {design.REVISION}", "robogene-motor-board rev A")
+    assert _catalog_revision(stale) == "A" != design.REVISION
 
 
 def test_gerber_job_file_and_gerbers(fab):
