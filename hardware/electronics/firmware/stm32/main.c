@@ -93,13 +93,18 @@ int main(void) {
   STK_VAL = 0u;
   STK_CTRL = STK_CTRL_CLKSOURCE_Msk | STK_CTRL_ENABLE_Msk;
   uint32_t led = 0;
+  bool late = false;  // a period ended while the last tick ran: run the next one at once
   for (;;) {
     rg_can_frame_t frame;
     while (fdcan_receive(&frame)) rg_board_receive(&board, &frame);
-    if (!(STK_CTRL & STK_CTRL_COUNTFLAG_Msk)) continue;
+    // COUNTFLAG clears when read, so each period is seen once.
+    if (!late && !(STK_CTRL & STK_CTRL_COUNTFLAG_Msk)) continue;
+    late = false;
     rg_board_tick(&board);
-    // A period that ended before the tick was done is an overrun: the flag was raised again meanwhile.
-    if (STK_CTRL & STK_CTRL_COUNTFLAG_Msk) rg_board_note_overrun(&board);
+    if (STK_CTRL & STK_CTRL_COUNTFLAG_Msk) {  // the next period began before this tick was done
+      rg_board_note_overrun(&board);
+      late = true;
+    }
     (void)fdcan_recover();
     if (board.address != filtered_address) {  // set_board_id: take the new address's commands
       filtered_address = board.address;
