@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 
+#include "core_params.hpp"
 #include "rg_board.h"
 #include "robogene/error.hpp"
 
@@ -75,36 +76,6 @@ Frame from_core(const rg_can_frame_t& c) {
   return f;
 }
 
-std::int16_t fit_i16(int v, const std::string& what) {
-  if (v < -32768 || v > 32767) throw Error("simulated board: " + what + " " + std::to_string(v) + " does not fit int16");
-  return static_cast<std::int16_t>(v);
-}
-
-// The core's axis parameters from a joint of head.ini, in counts as the firmware's table has them.
-rg_axis_params_t axis_params(const JointConfig& jc) {
-  rg_axis_params_t p{};
-  p.present = true;
-  p.min_position = static_cast<std::int32_t>(std::lround(jc.min * jc.counts_per_degree));
-  p.max_position = static_cast<std::int32_t>(std::lround(jc.max * jc.counts_per_degree));
-  p.max_speed = static_cast<std::int32_t>(std::lround(jc.max_velocity * jc.counts_per_degree));
-  p.current_limit_ma = static_cast<std::int32_t>(std::lround(jc.current_limit));
-  p.pid.kp = fit_i16(jc.pid.kp, jc.name + " kp");
-  p.pid.ki = fit_i16(jc.pid.ki, jc.name + " ki");
-  p.pid.kd = fit_i16(jc.pid.kd, jc.name + " kd");
-  p.pid.shift = static_cast<std::uint8_t>(std::clamp(jc.pid.shift, 0, 15));
-  p.pid.offset = fit_i16(jc.pid.offset, jc.name + " offset");
-  p.pid.output_limit = fit_i16(jc.pid.output_limit, jc.name + " output_limit");
-  p.pid.integral_limit = fit_i16(jc.pid.integral_limit, jc.name + " integral_limit");
-  const HomingConfig& h = jc.homing;
-  p.homing.direction = static_cast<std::int8_t>(h.direction);
-  p.homing.speed = static_cast<float>(h.speed * jc.counts_per_degree);
-  p.homing.pwm_limit = fit_i16(h.pwm, jc.name + " homing pwm");
-  p.homing.stop_position = static_cast<std::int32_t>(std::lround(h.stop * jc.counts_per_degree));
-  p.homing.backoff = static_cast<std::int32_t>(std::lround(h.backoff * jc.counts_per_degree));
-  p.homing.timeout_ms = static_cast<std::uint32_t>(std::lround(h.timeout * 1000.0));
-  return p;
-}
-
 // The hard stop a homing joint runs into, on its homing side, as the motor model's limit; the
 // eye board's version homes both eyes: left = version + vergence / 2, right = version - vergence / 2.
 void place_stop(MotorParameters& mp, int direction, double motor_stop_degrees) {
@@ -114,62 +85,28 @@ void place_stop(MotorParameters& mp, int direction, double motor_stop_degrees) {
   mp.stop_max = direction > 0 ? motor_stop_degrees : 1e9;
 }
 
-double motor_counts_per_degree(const JointConfig& jc) { return 4.0 * jc.motor_encoder_lines * jc.gear_ratio / 360.0; }
-
 }  // namespace
 
 BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor)
     : model_(std::make_unique<Model>()) {
   Model& s = *model_;
-  rg_board_params_t p{};
-  p.address = static_cast<std::uint8_t>(board.address);
-  p.pwm_full_scale = static_cast<std::uint16_t>(head.pwm_full_scale);
-  p.control_period_us = static_cast<std::uint32_t>(head.control_period_us);
-  p.velocity_timeout_ms = static_cast<std::uint16_t>(head.velocity_timeout_ms);
-  p.protocol_major = static_cast<std::uint8_t>(head.protocol_major);
-  p.protocol_minor = static_cast<std::uint8_t>(head.protocol_minor);
-  p.broadcast_policy = 0;  // until the host sets one, as the driver does at start-up
-  p.counts_m2a[0][0] = p.counts_m2a[1][1] = 1;
+  const rg_board_params_t p = core_params(head, board);
   for (std::size_t i = 0; i < 2; ++i) {
     MotorParameters mp = motor;
     const int j = board.joints[i];
-    if (j < 0) {
-      s.motors[i] = DcMotor(mp);
-      continue;
-    }
-    const JointConfig& jc = head.joints[static_cast<std::size_t>(j)];
-    mp.gear_ratio = jc.gear_ratio;
-    if (board.coupling) {
-      const HomingConfig& version = head.joints[static_cast<std::size_t>(board.joints[0])].homing;
-      const double vergence_stop = board.joints[1] >= 0 ? head.joints[static_cast<std::size_t>(board.joints[1])].homing.stop : 0.0;
-      place_stop(mp, version.direction, version.stop + (i == 0 ? 0.5 : -0.5) * vergence_stop);
-    } else {
-      place_stop(mp, jc.homing.direction, jc.homing.stop);
-    }
-    s.motors[i] = DcMotor(mp);
-    s.motor_counts_per_degree[i] = board.coupling ? motor_counts_per_degree(jc) : jc.counts_per_degree;
-    p.axes[i] = axis_params(jc);
-  }
-  if (board.coupling) {
-    const Coupling& c = *board.coupling;
-    // The firmware mixes version and vergence as left = version + vergence / 2, right = version -
-    // vergence / 2; a configuration asking for another mix cannot run on it.
-    const bool mix_ok = c.type == "version_vergence" && c.j2m[0][0] == 1.0 && c.j2m[0][1] == 0.5 &&
-                        c.j2m[1][0] == 1.0 && c.j2m[1][1] == -0.5;
-    if (!mix_ok) throw Error("simulated board '" + board.name + "': the firmware implements no coupling '" + c.type + "' with this j2m");
-    p.coupling = RG_COUPLING_VERSION_VERGENCE;
-    // axis counts = diag(axis counts/deg) m2j diag(deg/motor count): whole numbers on a coupling
-    // the firmware can run.
-    for (std::size_t r = 0; r < 2; ++r) {
-      const double cpd = head.joints[static_cast<std::size_t>(board.joints[r])].counts_per_degree;
-      for (std::size_t m = 0; m < 2; ++m) {
-        const double v = cpd * c.m2j[r][m] / s.motor_counts_per_degree[m];
-        if (std::fabs(v - std::round(v)) > 1e-6) {
-          throw Error("simulated board '" + board.name + "': coupling counts are not whole (" + std::to_string(v) + ")");
-        }
-        p.counts_m2a[r][m] = static_cast<std::int8_t>(std::lround(v));
+    if (j >= 0) {
+      const JointConfig& jc = head.joints[static_cast<std::size_t>(j)];
+      mp.gear_ratio = jc.gear_ratio;
+      s.motor_counts_per_degree[i] = motor_counts_per_degree(head, board, i);
+      if (board.coupling) {
+        const HomingConfig& version = head.joints[static_cast<std::size_t>(board.joints[0])].homing;
+        const double vergence_stop = board.joints[1] >= 0 ? head.joints[static_cast<std::size_t>(board.joints[1])].homing.stop : 0.0;
+        place_stop(mp, version.direction, version.stop + (i == 0 ? 0.5 : -0.5) * vergence_stop);
+      } else {
+        place_stop(mp, jc.homing.direction, jc.homing.stop);
       }
     }
+    s.motors[i] = DcMotor(mp);
   }
   s.pwm_full_scale = head.pwm_full_scale;
   s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr};
