@@ -109,7 +109,7 @@ BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const Motor
     s.motors[i] = DcMotor(mp);
   }
   s.pwm_full_scale = head.pwm_full_scale;
-  s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr};
+  s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr, nullptr};
   s.params = p;
   rg_board_init(&s.core, &s.params, &s.hal);
 }

@@ -36,7 +36,13 @@ static void status(rg_board_t *b) {
   d[ROBOGENE_CAN_STATUS_BROADCAST_FAULTS1_BYTE] = b->axes[1].faults;
   d[ROBOGENE_CAN_STATUS_BROADCAST_MODE1_BYTE] = b->axes[1].mode;
   d[ROBOGENE_CAN_STATUS_BROADCAST_BOARD_FLAGS_BYTE] = b->board_flags;
-  const bool changed = memcmp(d, b->last_status, sizeof d) != 0;
+  if (b->hal->can_errors) {
+    b->hal->can_errors(b->hal->ctx, &d[ROBOGENE_CAN_STATUS_BROADCAST_TX_ERRORS_BYTE],
+                       &d[ROBOGENE_CAN_STATUS_BROADCAST_RX_ERRORS_BYTE], &d[ROBOGENE_CAN_STATUS_BROADCAST_CAN_STATUS_BYTE]);
+  }
+  // A change of mode, fault or state is sent at once; the error counters ride along, as they
+  // move too often to trigger a frame each.
+  const bool changed = memcmp(d, b->last_status, ROBOGENE_CAN_STATUS_BROADCAST_TX_ERRORS_BYTE) != 0;
   if (changed || !b->sent_once[SLOT_STATUS]) {
     b->sent_once[SLOT_STATUS] = true;
     b->last_sent[SLOT_STATUS] = b->tick;

@@ -40,6 +40,9 @@ typedef struct rg_hal {
   bool (*can_send)(void *ctx, const rg_can_frame_t *frame);
   // Keep the board's CAN address across resets (flash on the board); may be NULL.
   void (*save_address)(void *ctx, uint8_t address);
+  // The CAN controller's error counters and state (ROBOGENE_CAN_CAN_STATUS_* bits) for the status
+  // broadcast; may be NULL (all zero).
+  void (*can_errors)(void *ctx, uint8_t *tx_errors, uint8_t *rx_errors, uint8_t *status);
 } rg_hal_t;
 
 #ifdef __cplusplus

@@ -88,5 +88,13 @@ bool fdcan_recover(void) {
   return true;
 }
 
-uint8_t fdcan_tx_errors(void) { return (uint8_t)((FDCAN1_ECR & FDCAN1_ECR_TEC_Msk) >> FDCAN1_ECR_TEC_Pos); }
-uint8_t fdcan_rx_errors(void) { return (uint8_t)((FDCAN1_ECR & FDCAN1_ECR_REC_Msk) >> FDCAN1_ECR_REC_Pos); }
+void fdcan_errors(uint8_t *tx_errors, uint8_t *rx_errors, uint8_t *status) {
+  const uint32_t ecr = FDCAN1_ECR, psr = FDCAN1_PSR;
+  *tx_errors = (uint8_t)((ecr & FDCAN1_ECR_TEC_Msk) >> FDCAN1_ECR_TEC_Pos);
+  *rx_errors = (uint8_t)((ecr & FDCAN1_ECR_REC_Msk) >> FDCAN1_ECR_REC_Pos);
+  uint8_t s = 0u;
+  if (psr & FDCAN1_PSR_EW_Msk) s |= ROBOGENE_CAN_CAN_STATUS_RX_WARNING;
+  if (psr & FDCAN1_PSR_EP_Msk) s |= ROBOGENE_CAN_CAN_STATUS_RX_ERROR;
+  if (FDCAN1_RXF0S & FDCAN1_RXF0S_RF0L_Msk) s |= ROBOGENE_CAN_CAN_STATUS_HARDWARE_OVERRUN;
+  *status = s;
+}

@@ -16,7 +16,8 @@ bool fdcan_receive(rg_can_frame_t *frame);
 bool fdcan_send(const rg_can_frame_t *frame);
 // Leaves bus-off (the controller stops itself there); true when it was bus-off.
 bool fdcan_recover(void);
-uint8_t fdcan_tx_errors(void);
-uint8_t fdcan_rx_errors(void);
+// Error counters and the protocol's CAN status bits (rx_warning: error warning, rx_error: error
+// passive, hardware_overrun: a frame lost to a full receive FIFO since the last call).
+void fdcan_errors(uint8_t *tx_errors, uint8_t *rx_errors, uint8_t *status);
 
 #endif  // FDCAN_H

@@ -56,7 +56,13 @@ static void hal_save_address(void *ctx, uint8_t address) {
   pending_address = address;
 }
 
-static const rg_hal_t hal = {0, hal_encoder, hal_current, hal_supply, hal_fault, hal_pwm, hal_send, hal_save_address};
+static void hal_can_errors(void *ctx, uint8_t *tx, uint8_t *rx, uint8_t *status) {
+  (void)ctx;
+  fdcan_errors(tx, rx, status);
+}
+
+static const rg_hal_t hal = {0,         hal_encoder, hal_current,      hal_supply,    hal_fault,
+                             hal_pwm,   hal_send,    hal_save_address, hal_can_errors};
 
 static bool axes_at_rest(void) {
   for (unsigned i = 0; i < 2u; ++i) {

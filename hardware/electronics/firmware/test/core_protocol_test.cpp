@@ -98,6 +98,30 @@ TEST(CoreProtocol, BroadcastsRunAtTheirPeriodsAndStatusAlsoOnChange) {
   EXPECT_EQ(statuses, 2) << "one at start, one when axis 1 changed mode";
 }
 
+TEST(CoreProtocol, StatusCarriesTheControllersErrorsWithoutBeingSentForEachCount) {
+  FakeBoard b;
+  static std::uint8_t tec = 0;
+  b.hal.can_errors = [](void*, std::uint8_t* tx, std::uint8_t* rx, std::uint8_t* status) {
+    *tx = tec;
+    *rx = 7;
+    *status = tec >= 96 ? ROBOGENE_CAN_CAN_STATUS_RX_WARNING : 0;
+  };
+  b.start();
+  b.command(le32(ROBOGENE_CAN_CMD_SET_BROADCAST_POLICY, ROBOGENE_CAN_BROADCAST_MASK_STATUS));
+  std::vector<rg_can_frame_t> statuses;
+  for (int t = 0; t < 100; ++t) {
+    tec = static_cast<std::uint8_t>(t);
+    b.sent.clear();
+    rg_board_tick(&b.core);
+    for (const auto& f : b.sent) statuses.push_back(f);
+  }
+  ASSERT_EQ(statuses.size(), 2u) << "at start, and when the controller reached error warning";
+  EXPECT_EQ(statuses[0].data[ROBOGENE_CAN_STATUS_BROADCAST_TX_ERRORS_BYTE], 0);
+  EXPECT_EQ(statuses[0].data[ROBOGENE_CAN_STATUS_BROADCAST_RX_ERRORS_BYTE], 7);
+  EXPECT_EQ(statuses[1].data[ROBOGENE_CAN_STATUS_BROADCAST_TX_ERRORS_BYTE], 96);
+  EXPECT_EQ(statuses[1].data[ROBOGENE_CAN_STATUS_BROADCAST_CAN_STATUS_BYTE], ROBOGENE_CAN_CAN_STATUS_RX_WARNING);
+}
+
 TEST(CoreEncoder, ExtendsTheSixteenBitCounterAcrossWrapsBothWays) {
   rg_encoder_t e;
   rg_encoder_start(&e, 65000);
