@@ -3,8 +3,12 @@
 //
 // Homing from the host (robogene::can::home_joints, behind `robogene can-home`) against the
 // simulated head on the virtual bus: the eyes powered up somewhere unknown to their board.
+#include <cstdio>
+#include <thread>
+
 #include <gtest/gtest.h>
 
+#include "cli_head_session.hpp"
 #include "head_config_fixture.hpp"
 #include "robogene/can/homing.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
@@ -58,6 +62,30 @@ TEST(Homing, JointsThatDoNotHomeAreRefusedByName) {
         << e.what();
   }
   EXPECT_THROW(home_joints(std::make_unique<VirtualBus>("head"), head, {"neck_twist"}), Error);
+}
+
+// `robogene can-home` against `robogene can-sim`, each its own process on the virtual bus.
+TEST(Homing, TheCanHomeCommandHomesTheSimulatorsEyesAndRefusesAJointThatDoesNotHome) {
+  testing::TempBusDir dir;
+  const pid_t sim = testing::start_simulator("virtual:homing", dir.path() + "/sim.log");
+  testing::ChildGuard guard{sim};
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the simulator binds its node
+  auto run = [](const std::string& args, std::string& out) {
+    const std::string cmd = testing::robogene_bin() + " can-home --bus virtual:homing --from " + testing::head_ini_path() +
+                            " " + args + " 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    const int status = p ? ::pclose(p) : -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  std::string out;
+  EXPECT_EQ(run("", out), 0) << out;
+  EXPECT_NE(out.find("can-home: eyes_version: homing on board 3 axis 0"), std::string::npos) << out;
+  EXPECT_NE(out.find("can-home: eyes_version homed, now at 27."), std::string::npos) << out;
+  std::string refused;
+  EXPECT_EQ(run("neck_yaw", refused), 1) << refused;
+  EXPECT_NE(refused.find("joint 'neck_yaw' does not home"), std::string::npos) << refused;
 }
 
 }  // namespace
