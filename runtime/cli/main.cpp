@@ -52,6 +52,9 @@ const Command kCommands[] = {
     {"can-sim", "robogene can-sim --bus virtual:NAME|socketcan:IFACE --from head.ini [--log FILE.log] [--duration S]",
      "simulate the head's CAN boards on a bus until Ctrl-C (drive them with --device robogene_can)",
      robogene::cli::cmd_can_sim},
+    {"can-home", "robogene can-home --bus virtual:NAME|socketcan:IFACE --from head.ini [JOINT...]",
+     "home the joints without absolute encoders (the eyes) against their hard stops; exit 1 if one fails",
+     robogene::cli::cmd_can_home},
 };
 
 const Command* find_command(const std::string& name) {

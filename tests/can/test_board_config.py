@@ -151,6 +151,68 @@ int main(void) {
         assert math.isclose(float(cpd), g["encoder"][i], rel_tol=1e-6)
 
 
+def test_firmware_homing_matches_the_driver_config(build_dir, ini):
+    """The homing the firmware runs is the one the driver and the simulator read, in counts."""
+    program = build_dir / "print_homing.c"
+    program.write_text("""
+#include <stdio.h>
+#include "robogene_head_board_config.h"
+int main(void) {
+  for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b) {
+    for (int a = 0; a < 2; ++a) {
+      const robogene_axis_config_t *x = &robogene_board_configs[b].axes[a];
+      printf("%s %d %ld %ld %d %ld %lu\\n", x->joint, x->homing_direction, (long)x->homing_stop, (long)x->homing_speed,
+             x->homing_pwm, (long)x->homing_backoff, (unsigned long)x->homing_timeout_ms);
+    }
+  }
+  return 0;
+}
+""")
+    exe = build_dir / "print_homing"
+    result = subprocess.run([CC, "-std=c99", "-Wall", "-Wextra", "-Werror", f"-I{FIRMWARE}", str(program), "-o", str(exe)],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    rows = {line.split()[0]: [int(v) for v in line.split()[1:]]
+            for line in subprocess.run([str(exe)], capture_output=True, text=True, timeout=30, check=True).stdout.splitlines()}
+    g, h = ini["GENERAL"], ini["HOMING"]
+    for i, joint in enumerate(g["axis_names"]):
+        cpd = g["encoder"][i]
+        assert rows[joint] == [h["direction"][i], round(h["stop"][i] * cpd), round(h["speed"][i] * cpd), h["pwm"][i],
+                               round(h["backoff"][i] * cpd), round(h["timeout"][i] * 1000)], joint
+    assert rows["eyes_version"][0] == 1 and rows["neck_pitch"][0] == 0
+
+
+def test_homing_stop_inside_the_joint_range(tree):
+    errs, text = _errors(tree, "eyes_version:  {direction: 1, stop: 55,", "eyes_version:  {direction: 1, stop: 25,")
+    assert f"{_at(text, 'stop: 25', skip=6)}: error: motor_control.homing.eyes_version.stop: the upper stop at 25 deg " \
+           "is inside the joint's range -30..30" in errs
+
+
+def test_homing_backoff_that_ends_outside_the_range(tree):
+    errs, text = _errors(tree, "backoff: 27.5,", "backoff: 20,")
+    assert errs == [f"{_at(text, 'backoff: 20', skip=9)}: error: motor_control.homing.eyes_version.backoff: backing off "
+                    "20 deg from the stop at 55 deg ends at 35 deg, outside the joint's range -30..30"]
+
+
+def test_homing_pwm_above_the_output_limit(tree):
+    errs, text = _errors(tree, "pwm: 250,", "pwm: 950,")
+    assert errs == [f"{_at(text, 'pwm: 950', skip=5)}: error: motor_control.homing.eyes_version.pwm: 950 is outside "
+                    "1..output_limit (900)"]
+
+
+def test_vergence_cannot_home_on_its_own(tree):
+    errs, _ = _errors(tree, "eyes_vergence: {stop: 0}",
+                      "eyes_vergence: {stop: 0, direction: -1, speed: 10, pwm: 100, backoff: 0, timeout: 5}")
+    assert any(e.endswith("motor_control.homing.eyes_vergence.direction: vergence is found when version homes both "
+                          "eyes against their stops: give it only 'stop'") for e in errs), errs
+
+
+def test_version_homing_needs_the_vergence_at_the_stops(tree):
+    errs, _ = _errors(tree, "    eyes_vergence: {stop: 0}\n", "")
+    assert any(e.endswith("motor_control.homing: eyes_version homes the eye motors: eyes_vergence needs 'stop', the "
+                          "vergence when both eyes are against their stops") for e in errs), errs
+
+
 # ---- a wrong parameter file is refused, naming the field --------------------------------------
 
 @pytest.fixture

@@ -98,7 +98,7 @@ def test_scaled_enum_is_refused(tmp_path):
 
 def test_structure_errors_name_the_key(tmp_path):
     errs, text = errors_of(tmp_path, "        code: 46\n", "        code: 46\n        colour: red\n")
-    assert errs == [f"{NAME}:{line_of(text, 'colour')}:9: error: unknown key 'colour' in classes.0.commands.10 "
+    assert errs == [f"{NAME}:{line_of(text, 'colour')}:9: error: unknown key 'colour' in classes.0.commands.11 "
                     "(allowed: code, doc, name, reply, reply_length, request, request_length)"]
 
 

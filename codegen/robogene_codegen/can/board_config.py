@@ -30,6 +30,20 @@ PID_FIELDS = {"kp": ("set_position_pid", "kp"), "ki": ("set_position_pid", "ki")
               "output_limit": ("set_position_pid_limits", "output_limit"),
               "integral_limit": ("set_position_pid_limits", "integral_limit")}
 JOINT_KEYS = tuple(PID_FIELDS) + ("max_velocity", "current_limit")
+HOMING_KEYS = ("direction", "stop", "speed", "pwm", "backoff", "timeout")
+
+
+@dataclass
+class Homing:
+    """Homing against a hard stop (motor_control.homing.<joint>). direction 0: the joint does not home
+    itself; on the eye board vergence is found when version homes both eyes against their stops, and
+    `stop` is the vergence read there."""
+    direction: int              # +1 towards the upper stop, -1 the lower, 0 none
+    stop_deg: float             # the joint's angle pressed against the stop
+    speed: float = 0.0          # deg/s
+    pwm: int = 0                # PWM steps
+    backoff_deg: float = 0.0
+    timeout_s: float = 0.0
 
 
 @dataclass
@@ -48,6 +62,15 @@ class AxisConfig:
     pid: dict[str, int]
     max_velocity: float         # deg/s
     current_limit: int          # mA
+    homing: Optional[Homing] = None
+
+    @property
+    def homing_counts(self) -> dict[str, int]:
+        """The homing parameters in the firmware's units (all 0 when the joint does not home)."""
+        h = self.homing or Homing(0, 0.0)
+        return {"direction": h.direction, "stop": round(h.stop_deg * self.counts_per_degree),
+                "speed": round(h.speed * self.counts_per_degree), "pwm": h.pwm,
+                "backoff": round(h.backoff_deg * self.counts_per_degree), "timeout_ms": round(h.timeout_s * 1000)}
 
     @property
     def min_counts(self) -> int:
@@ -265,7 +288,9 @@ class _Reader:
             if value <= 0:
                 self.fail(mc + (key,), f"must be > 0, got {value}")
         axes = self._joints(mc, pwm)
+        self._homing(mc, axes)
         boards = self._boards(mc, axes)
+        self._coupled_homing(mc, boards)
         data = doc.data
         t = data["timeouts"]
         config = BoardConfig(
@@ -332,6 +357,73 @@ class _Reader:
                 self.fits(path, bound * counts, "set_min_position", "position", f"the limit {bound:g} deg")
             axes[name] = axis
         return axes
+
+    def _homing(self, mc: tuple, axes: dict[str, AxisConfig]) -> None:
+        """motor_control.homing (optional): per joint, how it finds its hard stop."""
+        if "homing" not in self.pdoc.data["motor_control"]:
+            return
+        node = self.get(mc + ("homing",), dict, "a mapping of control joints")
+        for name in node:
+            path = mc + ("homing", name)
+            if name not in axes:
+                self.fail(path, f"unknown joint (the control joints are {', '.join(axes)})")
+                continue
+            entry = self.get(path, dict, "a mapping")
+            for extra in sorted(set(entry) - set(HOMING_KEYS)):
+                self.fail(path + (extra,), f"unknown key (allowed: {', '.join(HOMING_KEYS)})")
+            a = axes[name]
+            stop = float(self.get(path + ("stop",), float, "a number (deg)"))
+            self.fits(path + ("stop",), stop * a.counts_per_degree, "set_encoder_position", "position",
+                      f"{stop:g} deg")
+            if "direction" not in entry:
+                for key in sorted(set(entry) & set(HOMING_KEYS) - {"stop"}):
+                    self.fail(path + (key,), "a joint that does not home itself (no direction) takes only 'stop'")
+                if not a.min_deg <= stop <= a.max_deg:
+                    self.fail(path + ("stop",), f"{stop:g} deg is outside the joint's range "
+                              f"{a.min_deg:g}..{a.max_deg:g}, where its partner leaves it")
+                a.homing = Homing(0, stop)
+                continue
+            direction = self.get(path + ("direction",), int, "1 (upper stop) or -1 (lower stop)")
+            if direction not in (1, -1):
+                self.fail(path + ("direction",), f"expected 1 (upper stop) or -1 (lower stop), got {direction}")
+            speed = float(self.get(path + ("speed",), float, "a number (deg/s)"))
+            if not 0 < speed <= a.max_velocity:
+                self.fail(path + ("speed",), f"{speed:g} deg/s is outside 0..max_velocity ({a.max_velocity:g})")
+            self.fits(path + ("speed",), speed * a.counts_per_degree, "calibrate_encoder", "speed", f"{speed:g} deg/s")
+            pwm = self.get(path + ("pwm",), int, "an integer (PWM steps)")
+            if not 0 < pwm <= a.pid["output_limit"]:
+                self.fail(path + ("pwm",), f"{pwm} is outside 1..output_limit ({a.pid['output_limit']})")
+            backoff = float(self.get(path + ("backoff",), float, "a number (deg)"))
+            timeout = float(self.get(path + ("timeout",), float, "a number (s)"))
+            if timeout <= 0:
+                self.fail(path + ("timeout",), f"must be > 0, got {timeout:g}")
+            beyond = stop >= a.max_deg if direction == 1 else stop <= a.min_deg
+            if direction in (1, -1) and not beyond:
+                side = "upper" if direction == 1 else "lower"
+                self.fail(path + ("stop",), f"the {side} stop at {stop:g} deg is inside the joint's range "
+                          f"{a.min_deg:g}..{a.max_deg:g}")
+            rest = stop - direction * backoff
+            if backoff < 0 or not a.min_deg <= rest <= a.max_deg:
+                self.fail(path + ("backoff",), f"backing off {backoff:g} deg from the stop at {stop:g} deg ends at "
+                          f"{rest:g} deg, outside the joint's range {a.min_deg:g}..{a.max_deg:g}")
+            a.homing = Homing(direction, stop, speed, pwm, backoff, timeout)
+
+    def _coupled_homing(self, mc: tuple, boards: list[Board]) -> None:
+        """On the eye board version homes both eyes against their stops, which fixes vergence too."""
+        for b in boards:
+            if b.coupling != COUPLING_VERSION_VERGENCE:
+                continue
+            version, vergence = b.axes
+            if vergence.homing and vergence.homing.direction:
+                self.fail(mc + ("homing", vergence.joint, "direction"), "vergence is found when version homes "
+                          "both eyes against their stops: give it only 'stop'")
+            homes = bool(version.homing and version.homing.direction)
+            if homes and not vergence.homing:
+                self.fail(mc + ("homing",), f"{version.joint} homes the eye motors: {vergence.joint} needs "
+                          "'stop', the vergence when both eyes are against their stops")
+            if vergence.homing and not homes:
+                self.fail(mc + ("homing", vergence.joint), f"found only when {version.joint} homes, which it "
+                          "does not (no direction)")
 
     def _within_drive(self, path: tuple, name: str, max_velocity: float, motors: list[dict]) -> None:
         """A speed limit the drive cannot reach is a typo or a wrong part: the joint's top speed is its motors'

@@ -151,6 +151,33 @@ std::int64_t wire_of(ControlMode v, const char* message, const char* field) {
   return static_cast<std::int64_t>(v);
 }
 
+const char* name_of(CalibrationType v) {
+  switch (v) {
+    case CalibrationType::hard_stop: return "hard_stop";
+  }
+  return nullptr;
+}
+
+CalibrationType calibration_type_from_wire(std::int64_t raw, const char* message, const char* field) {
+  const auto v = static_cast<CalibrationType>(raw);
+  if (raw < 0 || raw > 255 || name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(raw) + " is not a CalibrationType");
+  }
+  return v;
+}
+
+CalibrationType calibration_type_from_text(const std::string& word, const char* message, const char* field) {
+  if (word == "hard_stop") return CalibrationType::hard_stop;
+  fail(std::string(message) + "." + field + ": '" + word + "' is not a CalibrationType (hard_stop)");
+}
+
+std::int64_t wire_of(CalibrationType v, const char* message, const char* field) {
+  if (name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(static_cast<std::int64_t>(v)) + " is not a CalibrationType");
+  }
+  return static_cast<std::int64_t>(v);
+}
+
 const char* name_of(BoardType v) {
   switch (v) {
     case BoardType::dsp: return "dsp";
@@ -275,6 +302,31 @@ class TextFields {
   std::string message_;
   std::map<std::string, std::string> values_;
 };
+
+// ---- calibrate_encoder
+void put_fields(Frame& f, const CalibrateEncoder& m) {
+  put(f, 1, 1, wire_of(m.type, "calibrate_encoder", "type"));
+  put(f, 2, 2, static_cast<std::int64_t>(m.pwm));
+  put(f, 4, 2, to_raw(m.speed, 10.0, 0.0, -32768, 32767, "calibrate_encoder", "speed", "count/s"));
+}
+
+void take_fields(const Frame& f, CalibrateEncoder& m) {
+  m.type = calibration_type_from_wire(get(f, 1, 1, false), "calibrate_encoder", "type");
+  m.pwm = static_cast<std::int16_t>(get(f, 2, 2, true));
+  m.speed = from_raw(get(f, 4, 2, true), 10.0, 0.0);
+}
+
+void text_fields(std::string& s, const CalibrateEncoder& m) {
+  s += " type=" + std::string(to_string(m.type));
+  s += " pwm=" + std::to_string(m.pwm);
+  s += " speed=" + real_text(m.speed);
+}
+
+void parse_fields(TextFields& t, CalibrateEncoder& m) {
+  m.type = calibration_type_from_text(t.word("type"), "calibrate_encoder", "type");
+  m.pwm = static_cast<std::int16_t>(t.integer("pwm", -32768, 32767));
+  m.speed = t.real("speed");
+}
 
 // ---- get_control_mode
 void put_fields(Frame& f, const GetControlMode& m) {
@@ -1344,6 +1396,11 @@ const char* to_string(ControlMode v) {
   return name ? name : "(undefined)";
 }
 
+const char* to_string(CalibrationType v) {
+  const char* name = name_of(v);
+  return name ? name : "(undefined)";
+}
+
 const char* to_string(BoardType v) {
   const char* name = name_of(v);
   return name ? name : "(undefined)";
@@ -1368,6 +1425,10 @@ CanId split_id(std::uint16_t id) {
   out.source = static_cast<std::uint8_t>((id & 0x0F0) >> 4);
   out.low = static_cast<std::uint8_t>((id & 0x00F) >> 0);
   return out;
+}
+
+bool CalibrateEncoder::operator==(const CalibrateEncoder& o) const {
+  return type == o.type && pwm == o.pwm && speed == o.speed;
 }
 
 bool GetControlMode::operator==(const GetControlMode& ) const {
@@ -1588,6 +1649,10 @@ Envelope decode(const Frame& f) {
       e.axis = static_cast<std::uint8_t>(f.data[0] >> 7);
       const bool from_host = id.source == kHostAddress;
       switch (f.data[0] & 0x7F) {
+        case 4:
+          if (!from_host) fail(frame_text(f) + ": board " + std::to_string(id.source) + " sent calibrate_encoder, which has no reply");
+          e.message = take<CalibrateEncoder>(f);
+          return e;
         case 7:
           e.message = from_host ? take<GetControlMode>(f) : take<GetControlModeReply>(f);
           return e;
@@ -1747,6 +1812,7 @@ Envelope from_text(std::string_view text) {
   if (tokens.empty()) fail("empty message text");
   TextFields t(tokens[0]);
   for (std::size_t k = 1; k < tokens.size(); ++k) t.add(tokens[k]);
+  if (tokens[0] == CalibrateEncoder::name) return parse_one<CalibrateEncoder>(t);
   if (tokens[0] == GetControlMode::name) return parse_one<GetControlMode>(t);
   if (tokens[0] == GetControlModeReply::name) return parse_one<GetControlModeReply>(t);
   if (tokens[0] == MotionDone::name) return parse_one<MotionDone>(t);

@@ -23,7 +23,7 @@ namespace robogene::can {
 
 inline constexpr char kProtocolName[] = "motor_control";
 // First 16 hex digits of the SHA-256 of the protocol's canonical form.
-inline constexpr char kProtocolFingerprint[] = "1adfd7bc2d1bd86e";
+inline constexpr char kProtocolFingerprint[] = "4cbe3ad6bb6add3d";
 inline constexpr std::uint8_t kProtocolMajor = 1;
 inline constexpr std::uint8_t kProtocolMinor = 0;
 inline constexpr std::uint32_t kBitrate = 1000000;  // bit/s
@@ -91,6 +91,12 @@ enum class ControlMode : std::uint8_t {
 };
 const char* to_string(ControlMode v);
 
+// How an axis finds its zero in calibrate_encoder (the reference's calibration types).
+enum class CalibrationType : std::uint8_t {
+  hard_stop = 0,  // Drive against the axis's hard stop at a limited PWM.
+};
+const char* to_string(CalibrationType v);
+
 // The board family a firmware-version reply names (iCubCanProto_types.h).
 enum class BoardType : std::uint8_t {
   dsp = 0,
@@ -136,6 +142,7 @@ inline constexpr std::uint32_t supply = 0x1000u;  // Robogene: the motor supply 
 
 // Command codes (the low 7 bits of a command byte) and broadcast types (the low identifier bits).
 enum class Command : std::uint8_t {
+  calibrate_encoder = 4,
   get_control_mode = 7,
   motion_done = 8,
   set_control_mode = 9,
@@ -175,6 +182,20 @@ enum class BroadcastType : std::uint8_t {
 };
 
 enum class MessageKind : std::uint8_t { request, reply, broadcast };
+
+// Home an axis: with hard_stop it runs slowly into the stop the board's configuration names, takes that as the stop's position, backs off and holds in position mode (control mode calibration meanwhile, not_configured when no stop is found). A pwm or speed of 0 keeps the configured value.
+struct CalibrateEncoder {
+  static constexpr char name[] = "calibrate_encoder";
+  static constexpr MessageClass message_class = MessageClass::polling_motor_control;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 4;
+  static constexpr std::uint8_t length = 6;  // data bytes (DLC)
+  CalibrationType type = CalibrationType::hard_stop;  // uint8
+  std::int16_t pwm = 0;  // int16, pwm
+  double speed = 0.0;  // int16, count/s, raw * 10.0
+  bool operator==(const CalibrateEncoder& o) const;
+  bool operator!=(const CalibrateEncoder& o) const { return !(*this == o); }
+};
 
 // Ask an axis for its control mode.
 struct GetControlMode {
@@ -767,6 +788,7 @@ struct SupplyBroadcast {
 };
 
 using Message = std::variant<
+    CalibrateEncoder,
     GetControlMode,
     GetControlModeReply,
     MotionDone,

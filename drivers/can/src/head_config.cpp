@@ -201,6 +201,25 @@ HeadConfig read_head_config(const Searchable& config) {
   const auto output_limit = pids.ints("output_limit", count, 0, 32767);
   const auto integral_limit = pids.ints("integral_limit", count, 0, 32767);
 
+  // [HOMING] is optional: a configuration without it homes no joint.
+  std::vector<HomingConfig> homing(count);
+  if (config.find_group("HOMING")) {
+    const Group h(config, "HOMING");
+    const auto direction = h.ints("direction", count, -1, 1);
+    const auto stop = h.numbers("stop", count, -360, 360);
+    const auto speed = h.numbers("speed", count, 0, 1e5);
+    const auto pwm = h.ints("pwm", count, 0, 32767);
+    const auto backoff = h.numbers("backoff", count, 0, 720);
+    const auto timeout = h.numbers("timeout", count, 0, 3600);
+    for (std::size_t j = 0; j < count; ++j) {
+      homing[j] = HomingConfig{direction[j], stop[j], speed[j], pwm[j], backoff[j], timeout[j]};
+      if (direction[j] != 0 && (speed[j] <= 0 || pwm[j] <= 0 || timeout[j] <= 0)) {
+        h.fail("speed", "joint " + axis_names[j] + " homes (direction " + std::to_string(direction[j]) +
+                            ") but its speed, pwm or timeout is 0");
+      }
+    }
+  }
+
   std::set<int> seen_addresses;
   for (std::size_t b = 0; b < names.size(); ++b) {
     if (!seen_addresses.insert(addresses[b]).second) {
@@ -222,6 +241,7 @@ HeadConfig read_head_config(const Searchable& config) {
     jc.max_velocity = max_velocity[j];
     jc.current_limit = current[j];
     jc.pid = PidGains{kp[j], ki[j], kd[j], shift[j], offset[j], output_limit[j], integral_limit[j]};
+    jc.homing = homing[j];
     BoardConfig* board = nullptr;
     for (auto& b : head.boards) {
       if (b.address == jc.board) board = &b;

@@ -172,5 +172,60 @@ TEST(BoardSim, PositionMovesAreIgnoredOutsidePositionModeAndClampedToLimits) {
   EXPECT_NEAR(rig.degrees(0), pitch.max, 0.1);
 }
 
+TEST(BoardSim, EyesHomeAgainstTheirHardStopsFromWhereverTheyPoweredUp) {
+  Rig rig;
+  const int version = 4, vergence = 5;
+  const JointConfig& v = rig.head.joints[version];
+  const JointConfig& g = rig.head.joints[vergence];
+  ASSERT_EQ(v.homing.direction, 1) << "the parameter file homes version towards the upper stops";
+  BoardSim& eyes = rig.board_of(version);
+  eyes.power_up_at(12.0, -7.0);  // the eyes were left apart; the board counts from 0 here
+  EXPECT_NEAR(rig.degrees(version), 0.0, 0.01);
+  rig.to_joint(version, CalibrateEncoder{CalibrationType::hard_stop, 0, 0});
+  EXPECT_EQ(eyes.mode(0), ControlMode::calibration);
+  const double travel = v.homing.stop - 12.0 + 19.0;  // the right eye has further to go
+  rig.run(travel / v.homing.speed + 0.5 + v.homing.backoff / v.homing.speed + 1.0);
+  ASSERT_EQ(eyes.mode(0), ControlMode::position);
+  EXPECT_EQ(eyes.mode(1), ControlMode::position);
+  // What the board reports is now where the eyes are.
+  const double left = eyes.motor_degrees(0), right = eyes.motor_degrees(1);
+  EXPECT_NEAR(rig.degrees(version), (left + right) / 2, 0.05);
+  EXPECT_NEAR(rig.degrees(vergence), left - right, 0.05);
+  EXPECT_NEAR(rig.degrees(version), v.homing.stop - v.homing.backoff, 0.2);
+  EXPECT_NEAR(rig.degrees(vergence), g.homing.stop, 0.2);
+  // And a move lands where asked, in the eyes' true angles.
+  rig.to_joint(version, PositionMove{static_cast<std::int32_t>(std::lround(5.0 * v.counts_per_degree)),
+                                     std::round(40 * v.counts_per_degree / 10) * 10});
+  rig.run(2.0);
+  EXPECT_NEAR(eyes.motor_degrees(0), 5.0, 0.1);
+  EXPECT_NEAR(eyes.motor_degrees(1), 5.0, 0.1);
+}
+
+TEST(BoardSim, JointsWithoutHomingRefuseToCalibrate) {
+  Rig rig;
+  rig.to_joint(0, CalibrateEncoder{CalibrationType::hard_stop, 0, 0});
+  EXPECT_EQ(rig.board_of(0).mode(0), ControlMode::idle);
+}
+
+TEST(BoardSim, ALowSupplyStopsARunningJointWithAFaultTheStatusReports) {
+  Rig rig;
+  rig.to_joint(0, SetControlMode{ControlMode::position});
+  rig.run(0.1);
+  rig.board_of(0).set_supply_voltage(7.5);
+  rig.broadcasts.clear();
+  rig.run(0.01);
+  EXPECT_EQ(rig.board_of(0).mode(0), ControlMode::hardware_fault);
+  bool reported = false;
+  for (const auto& e : rig.broadcasts) {
+    if (const auto* st = std::get_if<StatusBroadcast>(&e.message); st && e.source == 1) {
+      reported = st->mode0 == ControlMode::hardware_fault && (st->faults0 & axis_faults::undervoltage);
+    }
+  }
+  EXPECT_TRUE(reported);
+  rig.board_of(0).set_supply_voltage(12.0);
+  rig.to_joint(0, SetControlMode{ControlMode::force_idle});
+  EXPECT_EQ(rig.board_of(0).mode(0), ControlMode::idle);
+}
+
 }  // namespace
 }  // namespace robogene::can::sim

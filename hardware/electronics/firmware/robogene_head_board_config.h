@@ -40,6 +40,15 @@ typedef struct {
   float counts_per_degree;
   uint16_t motor_encoder_lines;
   uint8_t joint_encoder_bits;  // 0: no absolute joint encoder
+  // Homing against a hard stop (calibrate_encoder hard_stop). direction +1 upper stop, -1 lower;
+  // 0: the axis does not home itself (on the eye board vergence is found when version homes, and
+  // homing_stop is the vergence read there).
+  int8_t homing_direction;
+  int32_t homing_stop;         // counts at the stop
+  int32_t homing_speed;        // counts/s
+  int16_t homing_pwm;          // PWM steps
+  int32_t homing_backoff;      // counts moved away from the stop afterwards
+  uint32_t homing_timeout_ms;
 } robogene_axis_config_t;
 
 typedef struct {
@@ -58,10 +67,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
    {
      {"neck_pitch", -11264, 8260, 56320, 2000,
       170, 1, 1700, 8u, 0, 900, 300,
-      375.46666666666664f, 512u, 14u},
+      375.46666666666664f, 512u, 14u,
+      0, 0, 0, 0, 0, 0u},
      {"neck_roll", -7509, 7509, 56320, 2000,
       170, 1, 1700, 8u, 0, 900, 300,
-      375.46666666666664f, 512u, 14u}
+      375.46666666666664f, 512u, 14u,
+      0, 0, 0, 0, 0, 0u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
    {{1, 0}, {0, 1}},
@@ -69,10 +80,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
    {
      {"neck_yaw", -43447, 43447, 193097, 1200,
       66, 1, 660, 8u, 0, 900, 300,
-      965.4857142857144f, 512u, 14u},
+      965.4857142857144f, 512u, 14u,
+      0, 0, 0, 0, 0, 0u},
      {"eyes_tilt", -55003, 55003, 275017, 620,
       35, 1, 350, 8u, 0, 900, 300,
-      1833.447619047619f, 512u, 14u}
+      1833.447619047619f, 512u, 14u,
+      0, 0, 0, 0, 0, 0u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
    {{1, 1}, {1, -1}},
@@ -80,10 +93,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
    {
      {"eyes_version", -14677, 14677, 195698, 600,
       130, 1, 1300, 8u, 0, 900, 300,
-      489.24444444444447f, 512u, 0u},
+      489.24444444444447f, 512u, 0u,
+      1, 26908, 4892, 250, 13454, 20000u},
      {"eyes_vergence", 0, 11008, 97849, 600,
       260, 1, 2600, 8u, 0, 900, 300,
-      244.62222222222223f, 512u, 0u}
+      244.62222222222223f, 512u, 0u,
+      0, 0, 0, 0, 0, 0u}
    }}
 };
 

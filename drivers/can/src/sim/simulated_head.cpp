@@ -45,6 +45,11 @@ std::int32_t SimulatedHead::measured_counts(int address, int axis) {
   return board(address).measured_counts(axis);
 }
 
+void SimulatedHead::power_up_at(int address, double motor0_degrees, double motor1_degrees) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).power_up_at(motor0_degrees, motor1_degrees);
+}
+
 void SimulatedHead::send(const Envelope& e) {
   try {
     bus_->send(encode(e), Millis(10));

@@ -22,6 +22,17 @@ struct PidGains {
   int offset = 0, output_limit = 0, integral_limit = 0;
 };
 
+// Homing against a hard stop ([HOMING]). direction 0: the joint does not home itself; on the eye
+// board vergence is found when version homes, and `stop` is the vergence read there.
+struct HomingConfig {
+  int direction = 0;        // +1 towards the upper stop, -1 the lower
+  double stop = 0;          // degrees, the joint's angle at the stop
+  double speed = 0;         // deg/s
+  int pwm = 0;              // PWM steps
+  double backoff = 0;       // degrees
+  double timeout = 0;       // s
+};
+
 struct JointConfig {
   std::string name;
   int board = 0;                  // CAN address
@@ -33,6 +44,7 @@ struct JointConfig {
   double max_velocity = 0;        // deg/s
   double current_limit = 0;       // mA
   PidGains pid;
+  HomingConfig homing;
 };
 
 // Two joints driven by two motors together: motors = j2m * joints, joints = m2j * motors (deg).

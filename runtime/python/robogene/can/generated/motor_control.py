@@ -16,11 +16,11 @@ import re
 from dataclasses import dataclass
 from typing import ClassVar, NamedTuple, Optional, Union
 
-__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BroadcastMask", "BroadcastType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "Envelope", "FIRST_BOARD_ADDRESS", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
+__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BroadcastMask", "BroadcastType", "CalibrateEncoder", "CalibrationType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "Envelope", "FIRST_BOARD_ADDRESS", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
 
 PROTOCOL_NAME = "motor_control"
 # First 16 hex digits of the SHA-256 of the protocol's canonical form.
-PROTOCOL_FINGERPRINT = "1adfd7bc2d1bd86e"
+PROTOCOL_FINGERPRINT = "4cbe3ad6bb6add3d"
 PROTOCOL_MAJOR = 1
 PROTOCOL_MINOR = 0
 BITRATE = 1000000  # bit/s
@@ -85,6 +85,12 @@ class ControlMode(enum.IntEnum):
     CONFIGURED = 177
 
 
+class CalibrationType(enum.IntEnum):
+    """How an axis finds its zero in calibrate_encoder (the reference's calibration types)."""
+
+    HARD_STOP = 0  # Drive against the axis's hard stop at a limited PWM.
+
+
 class BoardType(enum.IntEnum):
     """The board family a firmware-version reply names (iCubCanProto_types.h)."""
 
@@ -135,6 +141,7 @@ class BroadcastMask(enum.IntFlag):
 class Command(enum.IntEnum):
     """Command codes: the low 7 bits of a command byte."""
 
+    CALIBRATE_ENCODER = 4
     GET_CONTROL_MODE = 7
     MOTION_DONE = 8
     SET_CONTROL_MODE = 9
@@ -186,6 +193,21 @@ class _Field(NamedTuple):
     offset: float
     unit: str
     type: Optional[type]
+
+
+@dataclass
+class CalibrateEncoder:
+    """Home an axis: with hard_stop it runs slowly into the stop the board's configuration names, takes that as the stop's position, backs off and holds in position mode (control mode calibration meanwhile, not_configured when no stop is found). A pwm or speed of 0 keeps the configured value."""
+
+    NAME: ClassVar[str] = "calibrate_encoder"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.POLLING_MOTOR_CONTROL
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 4
+    LENGTH: ClassVar[int] = 6
+    FIELDS: ClassVar[tuple] = (        _Field("type", "enum", 1, 1, False, 1.0, 0.0, "", CalibrationType),        _Field("pwm", "int", 2, 2, True, 1.0, 0.0, "pwm", None),        _Field("speed", "real", 4, 2, True, 10.0, 0.0, "count/s", None),    )
+    type: CalibrationType = CalibrationType.HARD_STOP
+    pwm: int = 0
+    speed: float = 0.0
 
 
 @dataclass
@@ -825,9 +847,9 @@ class SupplyBroadcast:
     voltage: float = 0.0
 
 
-Message = Union[GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast]
+Message = Union[CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast]
 
-MESSAGES = {m.NAME: m for m in (GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, )}
+MESSAGES = {m.NAME: m for m in (CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, )}
 _COMMANDS = {(m.MESSAGE_CLASS, m.CODE, m.KIND): m for m in MESSAGES.values() if m.KIND != "broadcast"}
 _BROADCASTS = {(m.MESSAGE_CLASS, m.CODE): m for m in MESSAGES.values() if m.KIND == "broadcast"}
 _ADDRESSED_BY_DESTINATION = {MessageClass.POLLING_MOTOR_CONTROL, MessageClass.POLLING_ANALOG_SENSOR, MessageClass.BOOTLOADER}

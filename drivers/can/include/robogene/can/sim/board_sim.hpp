@@ -1,16 +1,15 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// One simulated two-motor board, answering the protocol as the firmware does: commands to its
-// address (or to the broadcast address) change its axes or get a reply; every control period
-// (1 ms) it runs a trajectory generator and a position PID per axis, drives its motor models with
-// the PID's PWM, reads their encoders and queues the broadcasts its policy enables. On a coupled
-// board (the eyes) the PID runs on the joints (version, vergence), its outputs are mixed to the
-// two motors with j2m and the joints are read back from the motors with m2j, as the reference
-// MC4 does in its firmware.
+// One simulated two-motor board: the firmware's control core (hardware/electronics/firmware/core,
+// C) on a host HAL whose hardware is two DC motor models with their encoders and current sense.
+// Everything a board decides (commands, replies, trajectories, position loops, current limits,
+// faults, homing, broadcasts) is the firmware's own code; this class only turns envelopes into
+// frames and back, and advances the motors by the PWM the core set.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -22,57 +21,35 @@ namespace robogene::can::sim {
 
 class BoardSim {
  public:
+  // Throws robogene::Error when the board's configuration cannot be run by the firmware (a
+  // coupling it does not implement).
   BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor);
+  ~BoardSim();
+  BoardSim(BoardSim&&) noexcept;
+  BoardSim& operator=(BoardSim&&) noexcept;
 
-  int address() const { return address_; }
+  int address() const;
   // Handles a command addressed to this board; returns the reply when the command has one.
   std::optional<Envelope> handle(const Envelope& command);
   // Advances one control period of dt seconds ending at `now`; appends due broadcasts to `out`.
+  // dt must be the head's control period: the firmware counts its time in periods.
   void step(double now, double dt, std::vector<Envelope>& out);
 
-  // For tests: the joint-side angle of motor m (degrees), and an axis's measured counts.
-  double motor_degrees(int m) const { return motors_[static_cast<std::size_t>(m)].joint_degrees(); }
+  // For tests: the joint-side angle of motor m (degrees), an axis's measured counts and mode,
+  // and conditions of the board's hardware.
+  double motor_degrees(int m) const;
   std::int32_t measured_counts(int axis) const;
-  ControlMode mode(int axis) const { return axes_[static_cast<std::size_t>(axis)].mode; }
+  ControlMode mode(int axis) const;
+  void set_supply_voltage(double volts);
+  // A power-on reset with the motors at these joint-side angles: the board counts from 0 there,
+  // as a board without absolute encoders does until it homes.
+  void power_up_at(double motor0_degrees, double motor1_degrees);
+  void set_bridge_fault(bool asserted);
+
+  struct Model;
 
  private:
-  struct Axis {
-    bool present = false;
-    ControlMode mode = ControlMode::idle;
-    double ref = 0.0, ref_velocity = 0.0;  // trajectory, counts and counts/s
-    double target = 0.0, move_speed = 0.0, acceleration = 0.0;
-    double velocity_command = 0.0, velocity_command_time = -1.0;
-    bool done = true;
-    double min = 0.0, max = 0.0, max_velocity = 0.0;
-    PidGains pid;
-    double integral = 0.0, last_error = 0.0;
-    std::int16_t output = 0;
-    double counts_per_degree = 1.0;
-    double encoder_offset = 0.0;  // counts added by set_encoder_position
-    double measured = 0.0, speed = 0.0, accel = 0.0;
-  };
-
-  void reply_to(const Envelope& command, Message m, std::optional<Envelope>& out) const;
-  void set_mode(Axis& a, ControlMode mode);
-  void run_trajectory(Axis& a, double now, double dt);
-  std::int16_t run_pid(Axis& a);
-  void read_encoders(double dt);
-  void queue_broadcasts(double now, std::vector<Envelope>& out);
-  bool due(double now, double period_ms, double& last) const;
-
-  int address_;
-  int protocol_major_, protocol_minor_;
-  double pwm_full_scale_;
-  double velocity_timeout_s_;
-  std::uint32_t policy_ = 0;
-  std::optional<Coupling> coupling_;
-  std::array<Axis, 2> axes_{};
-  std::array<DcMotor, 2> motors_;
-  std::array<double, 2> joint_degrees_per_motor_degree_{{1.0, 1.0}};
-  double now_ = 0.0;
-  std::array<double, 6> last_sent_{{-1e9, -1e9, -1e9, -1e9, -1e9, -1e9}};
-  StatusBroadcast last_status_{};
-  bool status_sent_ = false;
+  std::unique_ptr<Model> model_;  // the core keeps pointers into it: its address must not move
 };
 
 }  // namespace robogene::can::sim

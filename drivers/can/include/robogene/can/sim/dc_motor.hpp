@@ -3,9 +3,10 @@
 //
 // A brushed DC motor behind a gearbox, driven by an H-bridge's PWM. The electrical time constant
 // (L/R, tens of microseconds) is far below the 1 ms control period, so current follows voltage
-// at once: i = (V - ke w) / R, limited by the board's current limit. The mechanics integrate
-// J dw/dt = kt i - b w in sub-steps. Defaults: a 12 V Faulhaber 2342-class motor (R 1.9 ohm,
-// kt 13.4 mNm/A, rotor 5.6 g cm^2) and a load of 5e-3 kg m^2 at the joint.
+// at once: i = (V - ke w) / R, cut at the bridge's own overcurrent limit (the board's firmware
+// limits it lower, per axis). The mechanics integrate J dw/dt = kt i - b w in sub-steps; a joint
+// with hard stops is held at them (an inelastic stop). Defaults: a 12 V Faulhaber 2342-class
+// motor (R 1.9 ohm, kt 13.4 mNm/A, rotor 5.6 g cm^2) and a load of 5e-3 kg m^2 at the joint.
 #pragma once
 
 #include <algorithm>
@@ -21,7 +22,9 @@ struct MotorParameters {
   double load_inertia = 5e-3;       // kg m^2 at the joint
   double viscous_friction = 2e-6;   // Nm s/rad at the motor
   double gear_ratio = 100.0;        // motor turns per joint turn
-  double current_limit = 1.0;       // A
+  double bridge_current_limit = 3.6;  // A, the DRV8872's overcurrent protection
+  bool hard_stops = false;          // the joint stops at [stop_min, stop_max] degrees
+  double stop_min = 0.0, stop_max = 0.0;
 };
 
 class DcMotor {
@@ -36,10 +39,12 @@ class DcMotor {
     const double h = dt / kSubSteps;
     for (int i = 0; i < kSubSteps; ++i) {
       const double volts = duty * p_.supply_voltage;
-      current_ = std::clamp((volts - p_.torque_constant * speed_) / p_.resistance, -p_.current_limit, p_.current_limit);
+      current_ = std::clamp((volts - p_.torque_constant * speed_) / p_.resistance, -p_.bridge_current_limit,
+                            p_.bridge_current_limit);
       const double torque = p_.torque_constant * current_ - p_.viscous_friction * speed_;
       speed_ += torque / inertia * h;
       angle_ += speed_ * h;
+      if (p_.hard_stops) hold_at_stops();
     }
   }
 
@@ -47,9 +52,17 @@ class DcMotor {
   double joint_degrees_per_second() const { return speed_ / p_.gear_ratio * 180.0 / M_PI; }
   double current_amps() const { return current_; }
   void set_joint_degrees(double deg) { angle_ = deg * M_PI / 180.0 * p_.gear_ratio; }
-  void set_current_limit(double amps) { p_.current_limit = amps; }
+  const MotorParameters& parameters() const { return p_; }
 
  private:
+  void hold_at_stops() {
+    const double lo = p_.stop_min * M_PI / 180.0 * p_.gear_ratio, hi = p_.stop_max * M_PI / 180.0 * p_.gear_ratio;
+    if (angle_ < lo || angle_ > hi) {
+      angle_ = std::clamp(angle_, lo, hi);
+      speed_ = 0.0;
+    }
+  }
+
   MotorParameters p_;
   double angle_ = 0.0;  // rad at the motor
   double speed_ = 0.0;  // rad/s at the motor

@@ -33,6 +33,8 @@ class SimulatedHead {
   // For tests and tools: the joint-side angle of a board's motor m, its axis's counts, its mode.
   double motor_degrees(int board, int motor);
   std::int32_t measured_counts(int board, int axis);
+  // A power-on reset of one board with its motors at these joint-side angles (BoardSim::power_up_at).
+  void power_up_at(int board, double motor0_degrees, double motor1_degrees);
   // Control periods run so far, and how many frames were not commands the boards understood.
   std::uint64_t ticks() const { return ticks_; }
   std::uint64_t rejected_frames() const { return rejected_; }

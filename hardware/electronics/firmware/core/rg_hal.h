@@ -1,0 +1,52 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The hardware the control core needs, and nothing more. The board's firmware fills this table
+// with register-level functions (stm32/), the simulator with a DC motor model
+// (drivers/can/src/sim/host_hal.cpp). Functions are called from the control tick only, so an
+// implementation needs no locking towards the core. `ctx` is passed back unchanged: the simulator
+// runs several boards in one process, each with its own motors.
+#ifndef RG_HAL_H
+#define RG_HAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// One classic CAN frame, 11-bit identifier.
+typedef struct {
+  uint16_t id;
+  uint8_t len;
+  uint8_t data[8];
+} rg_can_frame_t;
+
+typedef struct rg_hal {
+  void *ctx;
+  // The quadrature counter of motor 0 or 1 (x4 decoding), free-running and wrapping at 16 bits.
+  uint16_t (*encoder_raw)(void *ctx, unsigned motor);
+  // The motor current in mA, signed like the PWM that drives it.
+  int32_t (*current_ma)(void *ctx, unsigned motor);
+  // The motor supply in mV.
+  uint32_t (*supply_mv)(void *ctx);
+  // True while the H-bridges' shared fault output is asserted.
+  bool (*bridge_fault)(void *ctx);
+  // Drive motor 0 or 1 with `duty` PWM steps of the board's full scale (sign = direction);
+  // enabled false puts both bridge outputs low (coast).
+  void (*set_pwm)(void *ctx, unsigned motor, int32_t duty, bool enabled);
+  // Queue a frame for sending; false when the transmit queue is full (the frame is dropped).
+  bool (*can_send)(void *ctx, const rg_can_frame_t *frame);
+  // Keep the board's CAN address across resets (flash on the board); may be NULL.
+  void (*save_address)(void *ctx, uint8_t address);
+  // The CAN controller's error counters and state (ROBOGENE_CAN_CAN_STATUS_* bits) for the status
+  // broadcast; may be NULL (all zero).
+  void (*can_errors)(void *ctx, uint8_t *tx_errors, uint8_t *rx_errors, uint8_t *status);
+} rg_hal_t;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif  // RG_HAL_H

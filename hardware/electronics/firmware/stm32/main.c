@@ -1,0 +1,126 @@
+// SPDX-FileCopyrightText: 2026 Robogene contributors
+// SPDX-License-Identifier: BSD-3-Clause
+//
+// The motor board's firmware: the control core (../core) on this board's hardware. One image per
+// board of the head (ROBOGENE_BOARD_ADDRESS picks its entry of the generated board table); the CAN
+// address set_board_id stores in flash replaces the table's. The main loop polls: CAN frames go to
+// the core as they come, and every 1 ms (SysTick) the core runs one control period, after which
+// the watchdog is refreshed.
+#include <stdbool.h>
+
+#include "board_pins.h"
+#include "clock.h"
+#include "fdcan.h"
+#include "gpio.h"
+#include "motor_io.h"
+#include "rg_board.h"
+#include "rg_board_config.h"
+#include "robogene_can_motor_control.h"
+#include "settings.h"
+#include "stm32g431_regs.h"
+#include "watchdog.h"
+
+#ifndef ROBOGENE_BOARD_ADDRESS
+#error "build one image per board: -DROBOGENE_BOARD_ADDRESS=<the board's address in the head table>"
+#endif
+
+static rg_board_t board;
+static int pending_address = -1;  // set_board_id's new address, written to flash when the axes rest
+
+static uint16_t hal_encoder(void *ctx, unsigned m) {
+  (void)ctx;
+  return motor_io_encoder(m);
+}
+static int32_t hal_current(void *ctx, unsigned m) {
+  (void)ctx;
+  return motor_io_current_ma(m);
+}
+static uint32_t hal_supply(void *ctx) {
+  (void)ctx;
+  return motor_io_supply_mv();
+}
+static bool hal_fault(void *ctx) {
+  (void)ctx;
+  return motor_io_bridge_fault();
+}
+static void hal_pwm(void *ctx, unsigned m, int32_t duty, bool enabled) {
+  (void)ctx;
+  motor_io_set_pwm(m, duty, enabled);
+}
+static bool hal_send(void *ctx, const rg_can_frame_t *f) {
+  (void)ctx;
+  return fdcan_send(f);
+}
+static void hal_save_address(void *ctx, uint8_t address) {
+  (void)ctx;
+  pending_address = address;
+}
+
+static void hal_can_errors(void *ctx, uint8_t *tx, uint8_t *rx, uint8_t *status) {
+  (void)ctx;
+  fdcan_errors(tx, rx, status);
+}
+
+static const rg_hal_t hal = {0,         hal_encoder, hal_current,      hal_supply,    hal_fault,
+                             hal_pwm,   hal_send,    hal_save_address, hal_can_errors};
+
+static bool axes_at_rest(void) {
+  for (unsigned i = 0; i < 2u; ++i) {
+    const uint8_t m = board.axes[i].mode;
+    if (m == ROBOGENE_CAN_CONTROL_MODE_POSITION || m == ROBOGENE_CAN_CONTROL_MODE_VELOCITY ||
+        m == ROBOGENE_CAN_CONTROL_MODE_CALIBRATION) {
+      return false;
+    }
+  }
+  return true;
+}
+
+int main(void) {
+  clock_init();
+  RCC_AHB2ENR |= RCC_AHB2ENR_GPIOAEN_Msk | RCC_AHB2ENR_GPIOBEN_Msk;
+  gpio_mode(GPIOA_BASE, PIN_LED, GPIO_OUTPUT, GPIO_NO_PULL);
+  rg_board_params_t params;
+  if (!rg_board_params_for_address(ROBOGENE_BOARD_ADDRESS, &params)) {
+    for (;;) {  // built for a board the head does not have: blink fast, drive nothing
+      gpio_write(GPIOA_BASE, PIN_LED, 1);
+      clock_delay_us(100000u);
+      gpio_write(GPIOA_BASE, PIN_LED, 0);
+      clock_delay_us(100000u);
+    }
+  }
+  params.address = settings_address(params.address);
+  motor_io_init(params.pwm_full_scale);
+  fdcan_init(params.address);
+  rg_board_init(&board, &params, &hal);
+  watchdog_start();
+  uint8_t filtered_address = params.address;
+
+  STK_LOAD = SYSCLK_HZ / 1000000u * params.control_period_us - 1u;
+  STK_VAL = 0u;
+  STK_CTRL = STK_CTRL_CLKSOURCE_Msk | STK_CTRL_ENABLE_Msk;
+  uint32_t led = 0;
+  bool late = false;  // a period ended while the last tick ran: run the next one at once
+  for (;;) {
+    rg_can_frame_t frame;
+    while (fdcan_receive(&frame)) rg_board_receive(&board, &frame);
+    // COUNTFLAG clears when read, so each period is seen once.
+    if (!late && !(STK_CTRL & STK_CTRL_COUNTFLAG_Msk)) continue;
+    late = false;
+    rg_board_tick(&board);
+    if (STK_CTRL & STK_CTRL_COUNTFLAG_Msk) {  // the next period began before this tick was done
+      rg_board_note_overrun(&board);
+      late = true;
+    }
+    (void)fdcan_recover();
+    if (board.address != filtered_address) {  // set_board_id: take the new address's commands
+      filtered_address = board.address;
+      fdcan_init(filtered_address);
+    }
+    if (pending_address >= 0 && axes_at_rest()) {
+      (void)settings_save_address((uint8_t)pending_address);
+      pending_address = -1;
+    }
+    watchdog_refresh();
+    gpio_write(GPIOA_BASE, PIN_LED, (++led / 500u) & 1u);  // 1 Hz blink: the loop is alive
+  }
+}
