@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// What the motor board (revision B, hardware/electronics/generator/design.py) wires to each pin of
+// What the motor board (revision C, hardware/electronics/generator/design.py) wires to each pin of
 // its STM32G431KBT6 (LQFP-32), with the alternate function that pin needs (datasheet DS12589).
 #ifndef BOARD_PINS_H
 #define BOARD_PINS_H
@@ -12,6 +12,7 @@
 #define PIN_M2_IN1 2u     // PA2  TIM15_CH1 AF9, H-bridge 2
 #define PIN_M2_IN2 3u     // PA3  TIM15_CH2 AF9
 #define PIN_LED 4u        // PA4  status LED, output
+#define PIN_M2_AEA_CS 5u  // PA5  joint encoder 2 chip select (active low, 10 k pull-up; rev B had it on PB5)
 #define PIN_M1_ISENSE 6u  // PA6  ADC2_IN3, motor 1 current (INA240A1)
 #define PIN_M2_ISENSE 7u  // PA7  ADC2_IN4, motor 2 current
 #define PIN_M1_IN1 8u     // PA8  TIM1_CH1 AF6, H-bridge 1
@@ -24,7 +25,7 @@
 #define PIN_VBUS_SENSE 0u // PB0  ADC1_IN15, 12 V through 47 k / 10 k
 #define PIN_AEA_CLK 3u    // PB3  SPI1_SCK AF5
 #define PIN_AEA_DO 4u     // PB4  SPI1_MISO AF5
-#define PIN_M2_AEA_CS 5u  // PB5  joint encoder 2 chip select
+#define PIN_AEA_MOSI 5u   // PB5  SPI1_MOSI AF5, held high: 0xFFFF is the AS5048A's read-angle command
 #define PIN_M2_QA 6u      // PB6  TIM4_CH1 AF2, motor 2 encoder A
 #define PIN_M2_QB 7u      // PB7  TIM4_CH2 AF2
 
