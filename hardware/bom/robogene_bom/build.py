@@ -12,9 +12,10 @@ from . import collect, render
 
 
 def write_package(params, parts, board_boms: list[Path], out: Path, batch: int | None = None,
-                  catalog_path: Path | None = None) -> collect.Bom:
+                  catalog_path: Path | None = None, extras: list[tuple[str, float, str]] = ()) -> collect.Bom:
     """board_boms: CSV files, each merged boards.count times per head (the head uses one board design),
-    or PATH:N to give another count."""
+    or PATH:N to give another count. extras: (catalog key, quantity per head, what for), the harness's parts;
+    bom.system in the parameters adds what the head needs besides its own parts."""
     from robogene_head.parts import mounts
 
     batch = batch if batch is not None else int(params.root.node("bom").num("batch", positive=True))
@@ -24,7 +25,8 @@ def write_package(params, parts, board_boms: list[Path], out: Path, batch: int |
     boards = params.root.node("boards")
     copies = int(boards.num("count", positive=True))
     pcb = boards.text("pcb") if boards.has("pcb") else None
-    bom = collect.collect(parts, mounts.belts(params), [_board_arg(b, copies) for b in board_boms], catalog, pcb)
+    bom = collect.collect(parts, mounts.belts(params), [_board_arg(b, copies) for b in board_boms], catalog, pcb,
+                          list(extras) + system_lines(params, copies))
     out.mkdir(parents=True, exist_ok=True)
     name = params.root.text("name")
     (out / f"{name}-bom.csv").write_text(render.to_csv(bom, batch))
@@ -45,3 +47,26 @@ def _board_arg(arg, default: int) -> tuple[Path, int]:
     if match and not Path(text).exists():
         return Path(match.group(1)), int(match.group(2))
     return Path(text), default
+
+
+def system_lines(params, boards: int) -> list[tuple[str, float, str]]:
+    """bom.system: what the head needs to move besides its own parts (supply, CAN adapter, computer, board
+    assembly), each {key, qty (a number, or `boards` for one per board), for}."""
+    from robogene_head.params import Node, ParameterError
+
+    node = params.root.node("bom")
+    if not node.has("system"):
+        return []
+    listed = node.raw("system")
+    if not isinstance(listed, list):
+        raise ParameterError(f"{params.path}: bom.system: expected a list of {{key, qty, for}}")
+    out = []
+    for i, entry in enumerate(listed):
+        item = Node(entry, f"bom.system[{i}]", str(params.path))
+        qty = item.raw("qty")
+        if qty == "boards":
+            qty = boards
+        elif isinstance(qty, bool) or not isinstance(qty, int) or qty < 1:
+            raise item._fail("qty", f"expected a whole number >= 1 or `boards`, got {qty!r}")
+        out.append((item.text("key"), qty, item.text("for")))
+    return out

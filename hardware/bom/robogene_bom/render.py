@@ -9,7 +9,7 @@ import io
 
 from .collect import Bom
 
-COLUMNS = ["key", "description", "manufacturer", "mpn", "supplier", "qty_per_head", "qty_batch",
+COLUMNS = ["key", "description", "manufacturer", "mpn", "supplier", "unit", "qty_per_head", "qty_batch",
            "unit_price_batch", "line_cost_batch", "datasheet"]
 
 
@@ -20,10 +20,11 @@ def _money(value: float) -> str:
 def rows(bom: Bom, batch: int) -> list[dict]:
     out = []
     for line in bom.lines:
-        qty = line.per_head * batch
+        qty = line.ordered(batch)
         unit = line.item.unit_price(qty)
+        per_head = f"{line.per_head:.2f}" if line.item.unit == "m" else str(int(round(line.per_head)))
         out.append({"key": line.item.key, "description": line.item.description, "manufacturer": line.item.manufacturer,
-                    "mpn": line.item.mpn, "supplier": line.item.supplier, "qty_per_head": line.per_head,
+                    "mpn": line.item.mpn, "supplier": line.item.supplier, "unit": line.item.unit, "qty_per_head": per_head,
                     "qty_batch": qty, "unit_price_batch": f"{unit:.2f}", "line_cost_batch": f"{unit * qty:.2f}",
                     "datasheet": line.item.datasheet})
     return out
@@ -65,7 +66,7 @@ def to_markdown(bom: Bom, batch: int) -> str:
     for i, r in enumerate(rows(bom, batch), start=1):
         part = f"[{_md_escape(r['description'])}]({r['datasheet']})" if r["datasheet"] else _md_escape(r["description"])
         out.append(f"| {i} | {part} | {_md_escape(r['manufacturer'])} | "
-                   f"{_md_escape(r['mpn'])} | {r['qty_per_head']} | {r['unit_price_batch']} | {r['line_cost_batch']} |")
+                   f"{_md_escape(r['mpn'])} | {r['qty_per_head']}{' m' if r['unit'] == 'm' else ''} | {r['unit_price_batch']} | {r['line_cost_batch']} |")
     out += ["", f"Purchased parts: **{c} {_money(one)} for one head**, {c} {_money(each)} per head in a batch of "
                 f"{batch} ({c} {_money(total)} for the batch). Estimated list prices, not quotes.", ""]
     out += ["| made part | process | material | qty/head |", "|---|---|---|---:|"]
