@@ -8,7 +8,7 @@ import re
 from pathlib import Path
 
 from . import catalog as catalog_mod
-from . import collect, render
+from . import collect, making, render
 
 
 def write_package(params, parts, board_boms: list[Path], out: Path, batch: int | None = None,
@@ -30,14 +30,25 @@ def write_package(params, parts, board_boms: list[Path], out: Path, batch: int |
     out.mkdir(parents=True, exist_ok=True)
     name = params.root.text("name")
     (out / f"{name}-bom.csv").write_text(render.to_csv(bom, batch))
-    (out / f"{name}-made-parts.csv").write_text(render.made_csv(bom, batch))
-    (out / f"{name}-bom.md").write_text(render.to_markdown(bom, batch))
+    costs = made_costs(params, bom, batch)
+    (out / f"{name}-made-parts.csv").write_text(render.made_csv(bom, batch, costs))
+    (out / f"{name}-bom.md").write_text(render.to_markdown(bom, batch, costs))
     (out / "sources.json").write_text(json.dumps({
         "batch": batch, "catalog": str(catalog.path),
         "board_boms": [{"path": str(p), "copies": n} for p, n in (_board_arg(b, copies) for b in board_boms)]}, indent=1))
     (out / f"{name}-bom.html").write_text(render.to_html(bom, batch, f"Robogene head rev {params.root['revision']}: "
-                                                                     f"bill of materials"))
+                                                                     f"bill of materials", costs))
     return bom
+
+
+def made_costs(params, bom: collect.Bom, batch: int) -> dict | None:
+    """design -> (estimated unit cost making one head, making a batch); None without bom.making."""
+    if not params.root.node("bom").has("making"):
+        return None
+    r = making.rates(params)
+    density = params.root.node("materials")
+    return {m.design: (making.unit_cost(m, 1, r, density.num(m.material)),
+                       making.unit_cost(m, batch, r, density.num(m.material))) for m in bom.made}
 
 
 def _board_arg(arg, default: int) -> tuple[Path, int]:

@@ -32,6 +32,8 @@ class MadePart:
     kind: str          # machined / printed
     material: str
     per_head: int
+    volume_mm3: float = 0.0                     # the finished part
+    size_mm: tuple[float, float, float] = (0.0, 0.0, 0.0)   # its bounding box
 
 
 @dataclass
@@ -88,5 +90,12 @@ def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, 
     for key, quantity, user in extras:
         add(catalog.get(key, user), quantity, user)
     made_counts = Counter((p.design, p.kind, p.material) for p in parts if p.kind in ("machined", "printed"))
-    made = [MadePart(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
+    first = {}
+    for p in parts:
+        first.setdefault(p.design, p)
+
+    def made_part(d, k, m, n):
+        bb = first[d].local.BoundingBox()
+        return MadePart(d, k, m, n, first[d].local.Volume(), (bb.xlen, bb.ylen, bb.zlen))
+    made = [made_part(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
     return Bom(lines, made, catalog.currency, board_names)

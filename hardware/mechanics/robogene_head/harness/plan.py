@@ -14,7 +14,7 @@ import numpy as np
 from .. import kinematics
 from ..params import CHAIN_JOINTS, HeadParameters, ParameterError
 from . import pinout, spans
-from .spec import HOST, Cable, CableClass, Clamp, HarnessSpec
+from .spec import HOST, CableClass, Clamp, HarnessSpec
 
 LENGTH_STEP = 10.0   # cut lengths are rounded up to this (mm)
 
