@@ -224,3 +224,23 @@ def test_package_holds_the_harness(fab, params):
     for key in ("meanwell-GST90A12-P1M", "canable-2.0", "raspberrypi-SC1112"):
         assert rows[key]["qty_per_head"] == "1"
     assert rows["pcb-assembly-motor-board"]["qty_per_head"] == str(int(params.root.node("boards").num("count")))
+
+
+def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path):
+    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them."""
+    from robogene_bom import catalog
+    from robogene_head.cache import Cache
+    from robogene_head.progress import Progress
+    import io
+    cache, out = Cache(tmp_path / "state.json"), tmp_path / "fab"
+    log = io.StringIO()
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
+    assert log.getvalue().count("harness: unchanged") == 1
+    data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
+    data["parts"]["jst-PHR-4"]["mpn"] = "PHR-4-OTHER"
+    changed = tmp_path / "catalog.yaml"
+    changed.write_text(yaml.safe_dump(data))
+    harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log))
+    assert log.getvalue().count("harness: unchanged") == 1
+    assert "PHR-4-OTHER" in html.unescape((out / "harness" / "harness-neck-pitch-roll.svg").read_text())

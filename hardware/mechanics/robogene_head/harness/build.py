@@ -20,8 +20,11 @@ class HarnessError(RuntimeError):
     """A harness check failed; the message lists every violation and names the report."""
 
 
-def _key(params: HeadParameters, parts) -> str:
+def _key(params: HeadParameters, parts, catalog) -> str:
+    """Everything the harness is made from: parameters, its code, the board's pinout sources, the catalog (the
+    drawings name the mating parts by MPN) and where the parts it reaches sit."""
     code = [hashlib.sha256(p.read_bytes()).hexdigest() for p in SOURCES]
+    code.append(hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest())
     board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
     centres = []
     for p in parts:
@@ -34,7 +37,7 @@ def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progr
     """Returns the harness's BOM lines (catalog key, quantity per head, what for)."""
     folder, reports = out / "harness", out / "reports"
     data, text = folder / "harness.json", reports / "harness.txt"
-    key = _key(params, parts)
+    key = _key(params, parts, catalog)
     if cache.fresh("harness", key, [data, text]):
         progress.note("harness: unchanged")
         return [(b["key"], b["per_head"], b["for"]) for b in json.loads(data.read_text())["bom"]]
