@@ -4,6 +4,7 @@
 lacks (or a malformed board BOM) stops the build with a message naming it."""
 import csv
 import io
+import math
 from collections import Counter
 
 import pytest
@@ -116,7 +117,7 @@ def test_malformed_board_bom_is_named(tmp_path):
 def test_package_bom_files(fab, params, assembly):
     import json
     rows = list(csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open()))
-    qty = {r["key"]: int(r["qty_per_head"]) for r in rows}
+    qty = {r["key"]: float(r["qty_per_head"]) if r["unit"] == "m" else int(r["qty_per_head"]) for r in rows}
     expected = Counter(p.design for p in assembly.parts if p.kind == "purchased")
     assert all(expected[k] == 1 for k, _, _ in mounts.belts(params))   # each belt is a part of the assembly
     sources = json.loads((fab / "bom" / "sources.json").read_text())
@@ -132,10 +133,58 @@ def test_package_bom_files(fab, params, assembly):
         for row in csv.DictReader(open(b["path"], encoding="utf-8-sig")):
             expected[by_mpn[row["MPN"].casefold()].key] += int(row["Qty"]) * b["copies"]
         expected[params.root.node("boards").text("pcb")] += b["copies"]
-    assert qty == dict(expected)
+    # The harness's parts (its plan in the package) and what the head needs besides its own parts (bom.system).
+    for line in json.loads((fab / "harness" / "harness.json").read_text())["bom"]:
+        expected[line["key"]] += line["per_head"]
+    for key, n, _ in build.system_lines(params, copies):
+        expected[key] += n
+    assert set(qty) == set(expected)
+    assert all(qty[k] == pytest.approx(expected[k], abs=0.006) for k in qty)
     batch = int(params.root.node("bom").num("batch"))
-    assert all(int(r["qty_batch"]) == batch * int(r["qty_per_head"]) for r in rows)
+    for r in rows:   # wire is ordered in whole metres for the batch
+        per_head = float(r["qty_per_head"])
+        assert int(r["qty_batch"]) == (math.ceil(batch * per_head - 1e-9) if r["unit"] == "m" else batch * int(per_head))
     md = (fab / "bom" / "robogene-head-bom.md").read_text()
     assert md.count("\n| ") >= len(rows)
     html = (fab / "bom" / "robogene-head-bom.html").read_text()
     assert html.startswith("<!DOCTYPE html>") and html.count("<tr>") > len(rows)
+
+
+def test_parts_bought_by_length_are_ordered_in_whole_metres(params, assembly, cat):
+    bom = collect.collect(assembly.parts, mounts.belts(params), [], cat,
+                          extras=[("wire-28awg-ptfe", 0.35, "test"), ("wire-28awg-ptfe", 0.3, "test")])
+    wire = next(l for l in bom.lines if l.item.key == "wire-28awg-ptfe")
+    assert wire.per_head == pytest.approx(0.65) and wire.ordered(1) == 1 and wire.ordered(5) == 4
+    row = next(r for r in csv.DictReader(io.StringIO(render.to_csv(bom, 5))) if r["key"] == "wire-28awg-ptfe")
+    assert (row["unit"], row["qty_per_head"], row["qty_batch"]) == ("m", "0.65", "4")
+    assert float(row["line_cost_batch"]) == pytest.approx(4 * cat.items["wire-28awg-ptfe"].unit_price(4))
+
+
+def test_system_parts_are_listed(params):
+    lines = build.system_lines(params, 3)
+    keys = {k: n for k, n, _ in lines}
+    assert keys["pcb-assembly-motor-board"] == 3 and keys["canable-2.0"] == 1 and keys["meanwell-GST90A12-P1M"] == 1
+
+
+def test_making_the_parts_is_estimated_from_the_shop_rates(params, assembly, cat):
+    from robogene_bom import making
+    bom = collect.collect(assembly.parts, mounts.belts(params), [], cat)
+    r = making.rates(params)
+    density = params.root.node("materials")
+    flange = next(m for m in bom.made if m.design == "neck_base_flange")
+    stock = 1.0
+    for size in flange.size_mm:
+        stock *= size + 2 * r.stock_margin
+    minutes = r.cycle_min + (stock - flange.volume_mm3) / 1000 / r.removal_cm3_per_min
+    by_hand = stock * 1e-9 * 2700 * r.stock_per_kg + minutes / 60 * r.machining_per_h + r.setup_h * r.machining_per_h
+    assert making.unit_cost(flange, 1, r, density.num(flange.material)) == pytest.approx(by_hand)
+    # The set-up is shared by every piece of a batch: ten heads save nine tenths of it on each piece.
+    saved = making.unit_cost(flange, 1, r, 2700) - making.unit_cost(flange, 10, r, 2700)
+    assert saved == pytest.approx(r.setup_h * r.machining_per_h * 0.9)
+    cup = next(m for m in bom.made if m.design == "eye_cup")
+    assert making.unit_cost(cup, 1, r, 900) == pytest.approx(
+        cup.volume_mm3 * 1e-9 * 900 * r.filament_per_kg + (cup.volume_mm3 / 1000 / r.deposit_cm3_per_h + r.print_setup_h)
+        * r.printing_per_h)
+    assert making.per_head(bom, params, 5) < making.per_head(bom, params, 1)
+    md = render.to_markdown(bom, 5, build.made_costs(params, bom, 5))
+    assert "Making the parts (estimate" in md and "not quotes" in md

@@ -27,6 +27,7 @@ class Item:
     datasheet: str
     breaks: tuple[tuple[int, float], ...]   # ascending minimum quantities, the first is 1
     note: str = ""
+    unit: str = "pcs"    # pcs, or m for parts bought by length (wire)
 
     def unit_price(self, quantity: int) -> float:
         """Unit price when ordering `quantity` pieces: the largest break not above it."""
@@ -98,8 +99,11 @@ def load(path: Path | str | None = None) -> Catalog:
             raise CatalogError(f"{where}.breaks[0]: the first break must start at quantity 1")
         if any(a[0] >= b[0] for a, b in zip(parsed, parsed[1:])):
             raise CatalogError(f"{where}.breaks: minimum quantities must increase")
+        unit = entry.get("unit", "pcs")
+        if unit not in ("pcs", "m"):
+            raise CatalogError(f"{where}.unit: expected pcs or m, got {unit!r}")
         items[key] = Item(key, entry["description"].strip(), entry["manufacturer"].strip(), entry["mpn"].strip(),
-                          entry["supplier"].strip(), entry["datasheet"], tuple(parsed), str(entry.get("note", "")))
+                          entry["supplier"].strip(), entry["datasheet"], tuple(parsed), str(entry.get("note", "")), unit)
     mpns = {}
     for item in items.values():
         other = mpns.setdefault(item.mpn.casefold(), item.key)

@@ -4,6 +4,7 @@
 the parts of every KiCad board BOM; each looked up in the catalog. Made parts are listed with their process."""
 from __future__ import annotations
 
+import math
 from collections import Counter, OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -15,8 +16,14 @@ from .catalog import Catalog, CatalogError, Item
 @dataclass
 class Line:
     item: Item
-    per_head: int
+    per_head: float    # pieces, or metres for parts bought by length
     used_in: list[str] = field(default_factory=list)   # part instances or board references
+
+    def ordered(self, heads: int) -> int:
+        """What to order for `heads` heads: pieces, or whole metres of a part bought by length."""
+        if self.item.unit == "m":
+            return max(1, math.ceil(self.per_head * heads - 1e-9))
+        return int(round(self.per_head * heads))
 
 
 @dataclass
@@ -25,6 +32,8 @@ class MadePart:
     kind: str          # machined / printed
     material: str
     per_head: int
+    volume_mm3: float = 0.0                     # the finished part
+    size_mm: tuple[float, float, float] = (0.0, 0.0, 0.0)   # its bounding box
 
 
 @dataclass
@@ -36,12 +45,15 @@ class Bom:
 
     def cost_per_head(self, heads: int = 1) -> float:
         """Cost of the purchased parts of one head when `heads` heads are ordered together."""
-        return sum(line.per_head * line.item.unit_price(line.per_head * heads) for line in self.lines)
+        return sum(line.ordered(heads) * line.item.unit_price(line.ordered(heads)) for line in self.lines) / heads
 
 
-def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, pcb_key: str | None = None) -> Bom:
+def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, pcb_key: str | None = None,
+            extras: list[tuple[str, float, str]] = ()) -> Bom:
     """parts: robogene_head Part objects; belts: (catalog key, joint, teeth) from mounts.belts;
-    board_boms: (CSV path, copies of that board per head); pcb_key: catalog key of a bare board, one per copy."""
+    board_boms: (CSV path, copies of that board per head); pcb_key: catalog key of a bare board, one per copy;
+    extras: (catalog key, quantity per head, what it is for): the harness's parts and what the head needs besides
+    its own parts (supply, CAN adapter, computer, board assembly)."""
     counts: OrderedDict[str, list[str]] = OrderedDict()
     for part in parts:
         if part.kind == "purchased":
@@ -75,6 +87,15 @@ def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, 
             add(item, entry.quantity * copies, f"{path.stem}: {entry.references}")
         if pcb_key:
             add(catalog.get(pcb_key, f"board BOM {path.name}"), copies, f"{path.stem}: bare board")
+    for key, quantity, user in extras:
+        add(catalog.get(key, user), quantity, user)
     made_counts = Counter((p.design, p.kind, p.material) for p in parts if p.kind in ("machined", "printed"))
-    made = [MadePart(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
+    first = {}
+    for p in parts:
+        first.setdefault(p.design, p)
+
+    def made_part(d, k, m, n):
+        bb = first[d].local.BoundingBox()
+        return MadePart(d, k, m, n, first[d].local.Volume(), (bb.xlen, bb.ylen, bb.zlen))
+    made = [made_part(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
     return Bom(lines, made, catalog.currency, board_names)

@@ -41,8 +41,28 @@ def drive_table(joints: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def harness_table(harness: dict) -> str:
+    rows = ["| free span | joints | cut (mm) | cable class | tightest bend R (mm) | allowed R (mm) | twist | limit |",
+            "|---|---|---:|---|---:|---:|---:|---:|"]
+    for s in harness["spans"]:
+        for c in s["checks"]:
+            flat = c["twist_unit"] == "edge strain"
+            twist = f"{c['twist'] * 100:.2f} %" if flat else f"{c['twist']:.0f} deg/m"
+            limit = f"{c['allowed_twist'] * 100:.2f} %" if flat else f"{c['allowed_twist']:.0f} deg/m"
+            rows.append(f"| {s['from']} → {s['to']} | {', '.join(s['joints'])} | {s['length_mm']:g} | {c['class']} "
+                        f"({c['wires']} wires) | {c['min_bend_radius_mm']:.1f} | {c['allowed_bend_radius_mm']:.1f} | "
+                        f"{twist} | {limit} |")
+    rows += ["", "| cable | from | to | wires | cut length (mm) |", "|---|---|---|---:|---:|"]
+    for c in harness["cables"]:
+        rows.append(f"| {c['name']} | {c['from'][0]} {c['from'][1]} | {c['to']} | {len(c['wires'])} | {c['length_mm']:g} |")
+    for c in harness["cameras"]:
+        rows.append(f"| {c['name']} | camera | head computer | flat | {c['length_mm']:g} (needs {c['required_mm']:.0f}) |")
+    return "\n".join(rows) + "\n"
+
+
 def blocks(fab: Path) -> dict[str, str]:
     return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
+            "HARNESS": harness_table(json.loads((fab / "harness" / "harness.json").read_text())),
             "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text())),
             "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text()))}
 

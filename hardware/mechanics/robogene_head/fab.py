@@ -25,6 +25,8 @@ from .board_model import BoardModelError
 from .cache import Cache, digest
 from .checks import interference, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
+from .harness import build as harness_build
+from .harness.pinout import PinoutError
 from .mesh_solid import MeshSolidError
 from .params import ParameterError, load
 from .progress import Progress
@@ -122,6 +124,14 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
                   {f"{s.stem}.stl" for s in openscad.sources()}, progress)
     machined_designs = {d for d, e in designs.items() if e["part"].kind == "machined"}
     _remove_stale(out / "drawings", {f"{d}.{ext}" for d in machined_designs for ext in ("pdf", "svg")}, progress)
+    # 2b. The wiring harness: cable routes checked over the joints' ranges, drawn with WireViz; its parts go to the BOM.
+    sys.path.insert(0, str(REPO / "hardware" / "bom"))
+    from robogene_bom import catalog as catalog_mod
+    from robogene_bom.catalog import CatalogError
+    try:
+        harness_lines = harness_build.build(params, parts, out, cache, catalog_mod.load(), progress)
+    except (harness_build.HarnessError, PinoutError, CatalogError, RuntimeError) as exc:
+        raise BuildError(str(exc)) from None
     geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
                           [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
 
@@ -221,13 +231,11 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     _remove_stale(out / "renders", {p.name for p in render_out}, progress)
 
     # 10. Bill of materials.
-    sys.path.insert(0, str(REPO / "hardware" / "bom"))
     from robogene_bom import build as bom_build
     from robogene_bom.board import BoardBomError
-    from robogene_bom.catalog import CatalogError
     progress.note("BOM")
     try:
-        bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch)
+        bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch, extras=harness_lines)
     except (CatalogError, BoardBomError) as exc:
         raise BuildError(str(exc)) from None
 
@@ -314,7 +322,8 @@ def _write(path: Path, text: str) -> None:
 
 
 # The package's own top-level entries; other areas (build/fab/electronics) keep their own manifests.
-PACKAGE_ENTRIES = ("assembly", "bom", "config", "drawings", "renders", "reports", "step", "stl", "urdf", "parts.json")
+PACKAGE_ENTRIES = ("assembly", "bom", "config", "drawings", "harness", "renders", "reports", "step", "stl", "urdf",
+                   "parts.json")
 
 
 def write_manifest(out: Path, params_text: bytes, board) -> dict:

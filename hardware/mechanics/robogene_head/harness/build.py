@@ -1,0 +1,60 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The harness step of the fabrication build: plan the harness from the parameters and the assembly, write its
+report, stop the build when a cable is over its bend radius or twist limit, draw it with WireViz into
+build/fab/harness/, and hand its BOM lines to the BOM. Cached on everything it is made from."""
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+
+from ..cache import Cache, digest
+from ..params import HeadParameters
+from . import drawing, pinout, plan, report, spec
+
+SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))
+
+
+class HarnessError(RuntimeError):
+    """A harness check failed; the message lists every violation and names the report."""
+
+
+def _key(params: HeadParameters, parts, catalog) -> str:
+    """Everything the harness is made from: parameters, its code, the board's pinout sources, the catalog (the
+    drawings name the mating parts by MPN) and where the parts it reaches sit."""
+    code = [hashlib.sha256(p.read_bytes()).hexdigest() for p in SOURCES]
+    code.append(hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest())
+    board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
+    centres = []
+    for p in parts:
+        bb = p.shape.BoundingBox()
+        centres.append((p.name, p.link, round(bb.center.x, 4), round(bb.center.y, 4), round(bb.center.z, 4)))
+    return digest(params.path.read_bytes(), code, board, centres)
+
+
+def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progress) -> list[tuple[str, float, str]]:
+    """Returns the harness's BOM lines (catalog key, quantity per head, what for)."""
+    folder, reports = out / "harness", out / "reports"
+    data, text = folder / "harness.json", reports / "harness.txt"
+    key = _key(params, parts, catalog)
+    if cache.fresh("harness", key, [data, text]):
+        progress.note("harness: unchanged")
+        return [(b["key"], b["per_head"], b["for"]) for b in json.loads(data.read_text())["bom"]]
+    progress.note("harness: sweeping the free spans over their joints' ranges")
+    h = plan.plan(params, spec.load(params), parts)
+    folder.mkdir(parents=True, exist_ok=True)
+    reports.mkdir(parents=True, exist_ok=True)
+    text.write_text(report.as_text(h))
+    if not h.ok:
+        data.unlink(missing_ok=True)
+        raise HarnessError("harness check failed, see " + str(text) + ":\n  " + "\n  ".join(h.problems))
+    progress.note("harness: WireViz drawings")
+    written = drawing.write(h, catalog, folder)
+    for stale in folder.iterdir():
+        if stale.is_file() and stale not in written and stale != data:
+            stale.unlink()
+    document = report.as_json(h)
+    data.write_text(json.dumps(document, indent=1))
+    cache.record("harness", key)
+    return [(b["key"], b["per_head"], b["for"]) for b in document["bom"]]

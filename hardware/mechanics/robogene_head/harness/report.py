@@ -1,0 +1,54 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The harness plan as the package's report: a text table of every cable and every free span with its bend and
+twist margins (reports/harness.txt), and the same as JSON with the harness's BOM lines (harness/harness.json)."""
+from __future__ import annotations
+
+import math
+
+from .plan import Harness, bom_lines
+
+
+def as_json(h: Harness) -> dict:
+    return {
+        "ok": h.ok,
+        "problems": h.problems,
+        "cables": [{"name": c.name, "class": c.cls.name, "from": list(c.source), "header": c.source_mpn,
+                    "to": c.target, "wires": list(c.wires), "via": list(c.via), "length_mm": c.length} for c in h.cables],
+        "cameras": [{"name": c.name, "via": list(c.via), "required_mm": c.required,
+                     "length_mm": None if math.isnan(c.length) else c.length} for c in h.cameras],
+        "spans": [{"from": s.a, "to": s.b, "joints": list(s.joints), "poses": s.poses, "max_chord_mm": round(s.max_chord, 2),
+                   "length_mm": s.length, "cables": s.cables,
+                   "checks": [{"class": c.cls, "wires": c.wires, "min_bend_radius_mm": round(c.min_radius, 2),
+                               "allowed_bend_radius_mm": round(c.allowed_radius, 2),
+                               "worst_pose": {k: round(v, 2) for k, v in c.min_radius_pose.items()},
+                               "twist": round(c.twist, 5), "allowed_twist": c.allowed_twist,
+                               "twist_unit": "deg/m" if c.allowed_inplane == 0 else "edge strain",
+                               "min_inplane_radius_mm": None if math.isinf(c.min_inplane) else round(c.min_inplane, 1),
+                               "allowed_inplane_radius_mm": c.allowed_inplane or None}
+                              for c in s.checks]} for s in h.spans.values()],
+        "bom": [{"key": k, "per_head": q, "for": u} for k, q, u in bom_lines(h)],
+    }
+
+
+def as_text(h: Harness) -> str:
+    out = ["Harness: free spans across the joints, checked over every combination of "
+           f"{h.spec.sweep_samples} samples per joint of each span's joints", ""]
+    out.append(f"{'span':<28} {'joints':<34} {'free':>6} {'class':<14} {'R min':>7} {'allowed':>8} {'twist':>9} {'limit':>8}")
+    for s in h.spans.values():
+        for c in s.checks:
+            unit = "%" if c.allowed_inplane else "deg/m"
+            tw, lim = (c.twist * 100, c.allowed_twist * 100) if c.allowed_inplane else (c.twist, c.allowed_twist)
+            out.append(f"{s.a + ' -> ' + s.b:<28} {', '.join(s.joints):<34} {s.length:>6g} {c.cls:<14} "
+                       f"{c.min_radius:>7.1f} {c.allowed_radius:>8.1f} {tw:>8.2f}{'%' if unit == '%' else ' '} "
+                       f"{lim:>7.2f}{'%' if unit == '%' else ' '}")
+    out += ["", f"{'cable':<20} {'class':<14} {'from':<26} {'to':<30} {'wires':>5} {'cut (mm)':>9}"]
+    for c in h.cables:
+        out.append(f"{c.name:<20} {c.cls.name:<14} {c.source[0] + ' ' + c.source[1]:<26} {c.target:<30} "
+                   f"{len(c.wires):>5} {c.length:>9g}")
+    for c in h.cameras:
+        out.append(f"{c.name:<20} {'camera-ffc':<14} {'camera':<26} {'head computer':<30} {1:>5} "
+                   f"{c.length:>9g}  (needs {c.required:.0f})")
+    out += ["", "OK: every span within its cables' bend radius and twist limits" if h.ok else "FAILED:"]
+    out += [f"  {p}" for p in h.problems]
+    return "\n".join(out) + "\n"

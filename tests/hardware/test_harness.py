@@ -1,0 +1,246 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The wiring harness: the span model measures bend radius and twist correctly on curves of known shape; the head's
+routes pass, and the check fails on a variant over its bend radius or twist limit; lengths come from the sweep;
+the pinout is the board's; WireViz draws it; the package carries it and its parts reach the BOM."""
+import csv
+import dataclasses
+import html
+import json
+import math
+
+import numpy as np
+import pytest
+import yaml
+
+from robogene_head import params as params_mod
+from robogene_head.harness import build as harness_build, drawing, pinout, plan, spans, spec
+from robogene_head.parts import eyes, head_frame, neck
+
+
+@pytest.fixture(scope="module")
+def parts(params):
+    """The parts the harness reaches (drives, encoders, cameras): no board STEP needed."""
+    return neck.build(params) + head_frame.build(params) + eyes.build(params)
+
+
+def _variant(params, tmp_path, change):
+    """The parameter file with `change(data)` applied, loaded."""
+    data = yaml.safe_load(params.path.read_text())
+    change(data)
+    path = tmp_path / "head-parameters.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    return params_mod.load(path)
+
+
+def _frame(at, d, up):
+    return spans.Frame(np.array(at, float), np.array(d, float) / np.linalg.norm(d), np.array(up, float) / np.linalg.norm(up))
+
+
+def test_a_straight_span_is_straight_and_untwisted():
+    s = spans.shape(_frame([0, 0, 0], [0, 0, 1], [1, 0, 0]), _frame([0, 0, 100], [0, 0, 1], [1, 0, 0]), 100.0)
+    assert s.length == pytest.approx(100.0, rel=1e-3) and s.min_radius > 1e4 and abs(s.twist_deg) < 1e-6
+
+
+def test_twist_between_the_clamps_is_measured():
+    s = spans.shape(_frame([0, 0, 0], [0, 0, 1], [1, 0, 0]), _frame([0, 0, 100], [0, 0, 1], [0, 1, 0]), 100.0)
+    assert s.twist_deg == pytest.approx(90.0, abs=0.5)
+
+
+def test_a_u_loop_bends_about_half_its_width():
+    """Two legs 40 mm apart joined by a loop of a half circle's length: the tightest bend is near R 20 (the model's
+    curve is not a perfect half circle: its curvature peaks at the apex, so it reads somewhat tighter). A flat cable
+    whose face turns with the loop (normal in the loop's plane) bends out of its plane only; one lying in the loop's
+    plane (normal across it) bends within its plane."""
+    across = spans.shape(_frame([0, 0, 0], [1, 0, 0], [0, 0, 1]), _frame([0, 0, 40], [-1, 0, 0], [0, 0, -1]), math.pi * 20)
+    assert across.length == pytest.approx(math.pi * 20, rel=1e-3)
+    assert 12 < across.min_radius <= 20.5
+    assert across.min_inplane_radius > 1e4 and abs(across.twist_deg) < 0.5
+    within = spans.shape(_frame([0, 0, 0], [1, 0, 0], [0, 1, 0]), _frame([0, 0, 40], [-1, 0, 0], [0, 1, 0]), math.pi * 20)
+    assert within.min_inplane_radius == pytest.approx(within.min_radius, rel=1e-6)
+
+
+def test_a_span_shorter_than_its_clamps_apart_is_refused():
+    with pytest.raises(ValueError, match="cannot reach"):
+        spans.shape(_frame([0, 0, 0], [0, 0, 1], [1, 0, 0]), _frame([0, 0, 100], [0, 0, 1], [1, 0, 0]), 90.0)
+
+
+def test_the_heads_routes_pass(params, parts):
+    h = plan.plan(params, spec.load(params), parts)
+    assert h.ok, h.problems
+    crossed = {j for s in h.spans.values() for j in s.joints}
+    assert crossed == set(params_mod.CHAIN_JOINTS)   # every joint has a route across it
+    for s in h.spans.values():
+        assert s.checks and all(c.min_radius >= c.allowed_radius for c in s.checks)
+
+
+def test_a_cable_over_its_bend_radius_fails_the_check(params, parts, tmp_path):
+    def thicker(data):
+        data["harness"]["classes"]["motor-22awg"]["wire_od"] = 2.5   # R 25 > the neck loops' tightest bends
+    h = plan.plan(_variant(params, tmp_path, thicker), spec.load(_variant(params, tmp_path, thicker)), parts)
+    assert not h.ok
+    assert any("motor-22awg x2 bends to R" in p and "its minimum is R 25.0 mm" in p for p in h.problems), h.problems
+
+
+def test_a_twisted_group_is_held_to_its_group_diameter(params, parts, tmp_path):
+    def twisted(data):
+        data["harness"]["classes"]["motor-22awg"]["laid"] = "twisted"   # pair od 2.8 mm: R 28
+    p2 = _variant(params, tmp_path, twisted)
+    h = plan.plan(p2, spec.load(p2), parts)
+    assert any("motor-22awg x2" in p and "R 28.0 mm (10 x 2.80 mm)" in p for p in h.problems), h.problems
+
+
+def test_a_twist_over_its_limit_fails_the_check(params, parts, tmp_path):
+    def stiff(data):
+        data["harness"]["classes"]["signal-28awg"]["twist_deg_per_m"] = 100   # yaw twists the neck loop ~190 deg/m
+    p2 = _variant(params, tmp_path, stiff)
+    h = plan.plan(p2, spec.load(p2), parts)
+    assert any("span bay_exit -> head_entry" in p and "signal-28awg twists" in p and "limit is 100 deg/m" in p
+               for p in h.problems), h.problems
+
+
+def test_a_flat_cable_bent_in_its_own_plane_fails(params, parts, tmp_path):
+    def turned(data):   # lay the camera cable flat across the pan loop: panning now bends it within its plane
+        for side in ("eye_l", "eye_r"):
+            data["harness"]["clamps"][side]["up"] = [0, 0, 1]
+        for side in ("pan_feed_l", "pan_feed_r"):
+            data["harness"]["clamps"][side]["up"] = [0, 0, 1]
+    p2 = _variant(params, tmp_path, turned)
+    h = plan.plan(p2, spec.load(p2), parts)
+    assert any("camera-ffc bends in its own plane" in p for p in h.problems), h.problems
+
+
+def test_free_lengths_come_from_the_sweep(params, parts, tmp_path):
+    s = spec.load(params)
+    h = plan.plan(params, s, parts)
+    neck_span = h.spans[("bay_exit", "head_entry")]
+    assert neck_span.joints == ("neck_pitch", "neck_roll", "neck_yaw") and neck_span.poses == s.sweep_samples ** 3
+    assert neck_span.length == math.ceil(neck_span.max_chord * (1 + s.free_slack) / 5) * 5
+
+    # The longest chord is the clamps' greatest distance over the sampled poses, recomputed here from the kinematics.
+    from robogene_head import kinematics
+    a, b = s.clamps["bay_exit"], s.clamps["head_entry"]
+    grid = [np.linspace(params.joints[j].lower, params.joints[j].upper, s.sweep_samples) for j in neck_span.joints]
+    chords = []
+    for values in np.array(np.meshgrid(*grid)).reshape(len(grid), -1).T:
+        poses = kinematics.link_poses(params, dict(zip(neck_span.joints, values)))
+        pa = poses[a.link][:3, :3] @ a.at + poses[a.link][:3, 3]
+        pb = poses[b.link][:3, :3] @ b.at + poses[b.link][:3, 3]
+        chords.append(np.linalg.norm(pb - pa))
+    assert neck_span.max_chord == pytest.approx(max(chords), abs=1e-9) and max(chords) > min(chords) + 5
+
+    def narrow(data):   # the neck held still: the span is cut to its rest chord
+        for i, j in enumerate(("neck_pitch", "neck_roll", "neck_yaw")):
+            data["joints"][j]["min"], data["joints"][j]["max"] = -0.5, 0.5
+            data["control_joints"][i]["min"], data["control_joints"][i]["max"] = -0.5, 0.5
+    p2 = _variant(params, tmp_path, narrow)
+    h2 = plan.plan(p2, spec.load(p2), parts)
+    assert h2.spans[("bay_exit", "head_entry")].max_chord < neck_span.max_chord - 4
+    cut = {c.name: c.length for c in h.cables}
+    assert all(c.length < cut[c.name] for c in h2.cables if "head_entry" in c.via)
+    # Each cable: service loops at both ends, the free spans it crosses, the laid runs: at least the spans.
+    for c in h.cables:
+        free = sum(sp.length for key, sp in h.spans.items() if c.name in sp.cables)
+        assert c.length >= free + 2 * s.service_loop
+
+
+def test_pinout_is_the_boards(params):
+    conns = pinout.connectors()
+    assert conns["J21"].nets == ("+5V", "M1_ENC_A", "M1_ENC_B", "GND") and conns["J21"].mpn == "B4B-PH-K-S(LF)(SN)"
+    assert conns["J1"].nets == ("VIN_RAW", "GND") and conns["J1"].mpn == "B2P-VH(LF)(SN)"
+    # pin 1 of the supply header, from the KiCad PCB (105, 117), in the board STEP's frame (centre 145, 130; y up)
+    assert conns["J1"].at == (-40.0, 13.0)
+
+
+def test_bad_harness_entries_are_named(params, parts, tmp_path):
+    def unknown_clamp(data):
+        data["harness"]["cables"][3]["via"] = ["bay_exit", "nowhere"]
+    with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[3\]\.via: 'nowhere' is not a clamp"):
+        spec.load(_variant(params, tmp_path, unknown_clamp))
+
+    def no_route(data):
+        data["harness"]["cables"][3]["via"] = ["bay_exit"]   # roll motor: its part is on the pitch stage
+    p2 = _variant(params, tmp_path, no_route)
+    with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[3\] \(roll-motor\): the route ends on "
+                                                         r"neck_base but its far end is on neck_pitch_link"):
+        plan.plan(p2, spec.load(p2), parts)
+
+    def no_connector(data):
+        data["harness"]["cables"][0]["from"] = ["neck-pitch-roll", "J99"]
+    p3 = _variant(params, tmp_path, no_connector)
+    with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[0\] \(pitch-motor\)\.from: the board has "
+                                                         r"no connector J99"):
+        plan.plan(p3, spec.load(p3), parts)
+
+
+def test_wireviz_draws_every_cable(params, parts, tmp_path):
+    from robogene_bom import catalog
+    s = dataclasses.replace(spec.load(params), sweep_samples=3)
+    h = plan.plan(params, s, parts)
+    files = drawing.write(h, catalog.load(), tmp_path)
+    boards = params.root.node("boards").raw("names")
+    for stem in [f"harness-{b}" for b in boards] + ["harness-cameras"]:
+        svg = (tmp_path / f"{stem}.svg").read_text()
+        assert svg.startswith("<?xml") and "</svg>" in svg
+    svg = html.unescape((tmp_path / "harness-neck-pitch-roll.svg").read_text())   # Graphviz writes '-' as &#45;
+    assert "PHR-5" in svg and "VHR-2N" in svg and "pitch-motor" in svg and "M1_ENC_A" in svg
+    tsv = (tmp_path / "harness-neck-pitch-roll.bom.tsv").read_text()
+    assert "SPH-002T-P0.5S" in tsv and "SVH-21T-P1.1" in tsv
+    assert all(p.is_file() for p in files)
+
+
+def test_the_build_stops_on_a_violation(params, parts, tmp_path):
+    from robogene_bom import catalog
+    from robogene_head.cache import Cache
+    from robogene_head.progress import Progress
+
+    def thicker(data):
+        data["harness"]["classes"]["signal-28awg"]["bend_factor"] = 40
+    p2 = _variant(params, tmp_path, thicker)
+    with pytest.raises(harness_build.HarnessError, match=r"(?s)harness check failed.*signal-28awg x\d bends to R"):
+        harness_build.build(p2, parts, tmp_path / "fab", Cache(tmp_path / "state.json"), catalog.load(),
+                            Progress(open("/dev/null", "w")))
+    assert "FAILED" in (tmp_path / "fab" / "reports" / "harness.txt").read_text()
+
+
+def test_package_holds_the_harness(fab, params):
+    data = json.loads((fab / "harness" / "harness.json").read_text())
+    assert data["ok"] and not data["problems"]
+    boards = params.root.node("boards").raw("names")
+    for stem in [f"harness-{b}" for b in boards] + ["harness-cameras"]:
+        for ext in ("yml", "svg", "png", "html", "bom.tsv"):
+            assert (fab / "harness" / f"{stem}.{ext}").stat().st_size > 0
+    assert "OK: every span" in (fab / "reports" / "harness.txt").read_text()
+    rows = {r["key"]: r for r in csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open())}
+    # Housings: one per crimped end; contacts: one per wire end; wire by the metre.
+    expected = {}
+    for line in data["bom"]:
+        expected[line["key"]] = expected.get(line["key"], 0) + line["per_head"]
+    for key, qty in expected.items():
+        assert float(rows[key]["qty_per_head"]) == pytest.approx(qty, abs=0.006), key
+    ends = [c for c in data["cables"] if c["header"] == "B4B-PH-K-S(LF)(SN)"]
+    assert expected["jst-PHR-4"] == len(ends) and rows["wire-28awg-ptfe"]["unit"] == "m"
+    assert expected["rpi-camera-cable-500"] == 2
+    for key in ("meanwell-GST90A12-P1M", "canable-2.0", "raspberrypi-SC1112"):
+        assert rows[key]["qty_per_head"] == "1"
+    assert rows["pcb-assembly-motor-board"]["qty_per_head"] == str(int(params.root.node("boards").num("count")))
+
+
+def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path):
+    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them."""
+    from robogene_bom import catalog
+    from robogene_head.cache import Cache
+    from robogene_head.progress import Progress
+    import io
+    cache, out = Cache(tmp_path / "state.json"), tmp_path / "fab"
+    log = io.StringIO()
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
+    assert log.getvalue().count("harness: unchanged") == 1
+    data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
+    data["parts"]["jst-PHR-4"]["mpn"] = "PHR-4-OTHER"
+    changed = tmp_path / "catalog.yaml"
+    changed.write_text(yaml.safe_dump(data))
+    harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log))
+    assert log.getvalue().count("harness: unchanged") == 1
+    assert "PHR-4-OTHER" in html.unescape((out / "harness" / "harness-neck-pitch-roll.svg").read_text())
