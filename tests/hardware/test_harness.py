@@ -183,7 +183,7 @@ def test_wireviz_draws_every_cable(params, parts, tmp_path):
         svg = (tmp_path / f"{stem}.svg").read_text()
         assert svg.startswith("<?xml") and "</svg>" in svg
     svg = html.unescape((tmp_path / "harness-neck-pitch-roll.svg").read_text())   # Graphviz writes '-' as &#45;
-    assert "PHR-5" in svg and "VHR-2N" in svg and "pitch-motor" in svg and "M1_ENC_A" in svg
+    assert "PHR-6" in svg and "VHR-2N" in svg and "pitch-motor" in svg and "M1_ENC_A" in svg
     tsv = (tmp_path / "harness-neck-pitch-roll.bom.tsv").read_text()
     assert "SPH-002T-P0.5S" in tsv and "SVH-21T-P1.1" in tsv
     assert all(p.is_file() for p in files)
