@@ -136,6 +136,18 @@ def test_our_python_servers_answer_in_yarp_3_12_shapes(name, service):
     device.close()
 
 
+@pytest.mark.parametrize("name,service", [("remote_controlboard.txt", "controlboard"),
+                                          ("frame_grabber_nwc.txt", "grabber")])
+def test_our_python_servers_answer_what_yarp_3_12_clients_send(name, service):
+    """The requests YARP 3.12.3's own remote_controlboard and frameGrabber_nwc_yarp sent (their
+    bytes, not yarp rpc's) get 3.12.3's reply shapes from our server too."""
+    device, server = python_server(service)
+    compared, differing = compare_with_yarp(name, server.respond)
+    assert set(differing) <= set(KNOWN_DIFFERENCES[service]), differing
+    assert compared >= (40 if service == "controlboard" else 9)
+    device.close()
+
+
 @pytest.mark.parametrize("name,service,args,port", [
     ("controlboard_rpc.txt", "controlboard", ["--device", "test_motor", "--axes", "4", "--clock", "manual"], "/rg/rpc:i"),
     ("grabber_rpc.txt", "grabber", ["--device", "fake_grabber", "--width", "8", "--height", "4"], "/rg/rpc")])
