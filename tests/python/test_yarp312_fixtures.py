@@ -397,3 +397,30 @@ def test_our_remote_controlboard_still_asks_our_server_for_fingerprints(name_ser
     finally:
         for r in relays:
             r.close()
+
+
+def test_our_python_clients_never_ask_a_yarp_3_12_server_for_fingerprints(name_server):
+    """The Python remote_controlboard and remote_grabber against servers replaying YARP 3.12.3."""
+    from robogene.dev.generated import IEncoders, IFrameGrabberControls
+    network = Network(name_server.address)
+    joints = recorded_stream("streams.txt", "/stateExt:o")
+    motors = replay_server(network, "/y312py", ["/rpc:i", "/command:i", "/stateExt:o"],
+                           ("controlboard_rpc.txt", "remote_controlboard.txt"), joints)
+    camera = replay_server(network, "/y312pycam", ["", "/rpc"], ("grabber_rpc_chain.txt",))
+    try:
+        board = PolyDriver(Property.from_dict({"device": "remote_controlboard", "remote": "/y312py",
+                                               "local": "/pyours", "carrier": "tcp", "server": name_server.address}))
+        assert board.is_valid(), board.last_error
+        assert board.view(IEncoders).getAxes() == 4
+        board.close()
+        cam = PolyDriver(Property.from_dict({"device": "remote_grabber", "remote": "/y312pycam", "local": "/pyourcam",
+                                             "server": name_server.address}))
+        assert cam.is_valid(), cam.last_error
+        assert cam.view(IFrameGrabberControls).setFeature(CameraFeature.SHUTTER, 0.25) is True  # [fgc] [set] 1
+        cam.close()
+        for server in (motors, camera):
+            assert b"rgif" not in server.sent_bytes()
+            assert "[prop] [get] robogene_service" in server.admin
+    finally:
+        motors.close()
+        camera.close()
