@@ -245,7 +245,7 @@ PYTHON_CLIENT = textwrap.dedent("""
     assert clients.__file__.startswith(sys.argv[1]), clients.__file__
     with RpcClient("/newmethod/client", server="/newmethod/rpc:i", network=Network(sys.argv[2])) as port:
         client = ControlboardClient(port.call)
-        served = dict(client.check_server())  # raises if the two sides' fingerprints differ
+        served = dict(client.check_server(True))  # raises if the two sides' fingerprints differ
         print(served["IEncoders"], client.getEncoderTemperature(2), client.getEncoderTemperature(7))
 """)
 

@@ -387,3 +387,40 @@ def test_non_utf8_file(tmp_path):
     with pytest.raises(IdlErrors) as info:
         compile_directory(tmp_path)
     assert str(info.value) == f"{tmp_path}/bin.yaml:1:1: error: not UTF-8 text (byte 7)"
+
+
+def service_with(extra: str) -> str:
+    return textwrap.dedent("""\
+        idl: 1
+        service: cam
+        version: 1
+        doc: C.
+        rpc_port: rpc
+        interfaces: [IA]
+        """) + extra
+
+
+def test_command_reply_needs_scoped_replies_a_trailing_result_and_items_every_command_has(tmp_path):
+    ia = iface("- {name: go, doc: Go., wire: [set, go], args: [{name: j, type: joint}]}\n", name="IA")
+    (tmp_path / "1").mkdir()
+    assert one_error(tmp_path / "1", {"a.yaml": ia, "s.yaml": service_with("command_reply: [0, result]\n")}) == \
+        f"{tmp_path}/1/s.yaml:7:16: error: command_reply belongs only to a service with 'replies: scoped'"
+    (tmp_path / "2").mkdir()
+    assert one_error(tmp_path / "2", {"a.yaml": ia, "s.yaml": service_with(
+        "replies: scoped\ncommand_reply: [result, 0]\n")}) == \
+        f"{tmp_path}/2/s.yaml:8:16: error: command_reply must end with 'result' and name it once"
+    (tmp_path / "3").mkdir()
+    assert one_error(tmp_path / "3", {"a.yaml": ia, "s.yaml": service_with(
+        "replies: scoped\ncommand_reply: [0, 3, result]\n")}) == \
+        f"{tmp_path}/3/s.yaml:8:20: error: command_reply item 3 is past the end of the shortest command " \
+        "of this service (3 items)"
+    (tmp_path / "4").mkdir()
+    idl = compile_directory_ok(tmp_path / "4", {"a.yaml": ia, "s.yaml": service_with(
+        "replies: scoped\ncommand_reply: [0, 1, result]\n")})
+    assert idl.services[0].command_reply == (0, 1, "result")
+
+
+def compile_directory_ok(path, files: dict):
+    for name, text in files.items():
+        (path / name).write_text(text, encoding="utf-8")
+    return compile_directory(path)

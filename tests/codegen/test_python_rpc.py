@@ -109,7 +109,7 @@ def client_for(server, tamper=None):
 def test_paper_section_3_3_through_client_bytes_and_server():
     device, server = board(3)
     client = client_for(server)
-    assert [name for name, _ in client.check_server()] == [
+    assert [name for name, _ in client.check_server(True)] == [
         "IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode"]
     ipos, ivel = client, client
     assert isinstance(ipos, IPositionControl) and isinstance(ivel, IVelocityControl)
@@ -201,24 +201,36 @@ def test_client_refuses_a_server_built_from_other_idl():
         return reply
     with pytest.raises(Error, match="interface IPositionControl has fingerprint 0123456789abcdef, "
                                     f"this client was generated for {IPositionControl.FINGERPRINT}"):
-        client_for(server, tamper).check_server()
+        client_for(server, tamper).check_server(True)
 
 
-def test_client_checks_a_yarp_server_by_protocol_version():
+def test_client_checks_a_yarp_server_by_protocol_version_and_never_asks_it_for_fingerprints():
     _, server = board()
+
+    asked = []
 
     def yarp_like(minor):
         def tamper(request, reply):
             word = request[1].as_vocab_text()
-            if word == "rgif":
+            asked.append(word)
+            if word == "rgif":  # YARP 3.12 logs it as an error: never to be asked
                 return Bottle.from_text("[fail]")
             if word == "prot":
                 return Bottle.from_text(f"[prot] 1 {minor} 0 [ok]")
             return reply
         return tamper
-    assert client_for(server, yarp_like(9)).check_server() == []
+    assert client_for(server, yarp_like(9)).check_server(False) == []
     with pytest.raises(Error, match=r"^controlboard server speaks protocol 1\.8, this client speaks 1\.9$"):
-        client_for(server, yarp_like(8)).check_server()
+        client_for(server, yarp_like(8)).check_server(False)
+    assert asked == ["prot", "prot"]
+
+
+def test_a_server_that_says_it_is_robogenes_must_list_its_interfaces():
+    _, server = board()
+    tamper = lambda request, reply: Bottle.from_text("[fail]") if request[1].as_vocab_text() == "rgif" else reply
+    with pytest.raises(Error, match=r"^controlboard server says it is Robogene's but does not list its "
+                                    r"interfaces: \[fail\]$"):
+        client_for(server, tamper).check_server(True)
 
 
 def test_command_port_carries_streamed_moves():
@@ -254,3 +266,46 @@ def test_stream_messages_match_yarp():
     # The 60-byte header of a captured YARP 3 frame (sniff_image.txt).
     assert message[:60].hex() == ("0001000004000000090000006d61740009000000726762000101000005000000"
                                   "0300000000100e000800010080020000e00100000c00000000100e00")
+
+
+def test_grabber_client_reads_every_form_of_a_set_reply():
+    """YARP 3.12.3's [fgc] [set] <int32> says whether the set was done; Robogene's servers before it
+    answered success with an empty bottle; YARP 3.5's answer [nak] to every set, and 3.12.3's to one
+    they cannot parse (docs/interop.md)."""
+    from robogene.dev.generated import CameraFeature, FeatureMode
+    from robogene.dev.generated.clients import GrabberClient
+    sent, replies = [], []
+
+    def transport(request):
+        sent.append(request.to_text())
+        return Bottle.from_text(replies.pop(0))
+    client = GrabberClient(transport)
+    forms = {"[fgc] [set] 1": True, "[fgc] [set] 0": False, "": True, "[nak]": False, "[fgc] [set]": False,
+             "[fgc] [set] [ok]": False, "[fgc] [get] 1": False, "[fgc] [set] 1 [ok]": False}
+    for text, done in forms.items():
+        replies.append(text)
+        assert client.setFeature(CameraFeature.SHUTTER, 0.25) is done, text
+    replies.extend(["[fgc] [set] 1", "[fgc] [set] 0"])
+    assert client.setMode(CameraFeature.SHUTTER, FeatureMode.AUTOMATIC) is True
+    assert client.setActive(CameraFeature.SHUTTER, True) is False
+    assert sent[0] == "[fgc] [set] [feat] 7 0.25" and len(sent) == len(forms) + 2
+
+
+def test_grabber_server_answers_a_set_as_yarp_3_12_3():
+    from robogene.dev.generated import IFrameGrabberControls
+    from robogene.dev.generated.clients import GrabberClient
+    device = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 8, "height": 4, "clock": "manual"}))
+    server = RpcServer("grabber", device.view(IFrameGrabberControls))
+    ask = lambda text: server.respond(Bottle.from_text(text)).to_text()
+    assert ask("[fgc] [set] [feat] 7 0.25") == "[fgc] [set] 1"
+    assert ask("fgc set feat 7 0.5") == "[fgc] [set] 1"      # in vocabs, as YARP answers
+    assert ask("[fgc] [set] [feat] 10 0.5") == "[fgc] [set] 0"  # focus: refused
+    assert ask("[fgc] [set] [feat] 7") == "[fgc] [set] 0"       # no value: refused
+    assert ask("[fgc] [get] [feat] 7") == "[fgc] [feat] [is] 0.5"
+    assert ask("[fgc] [bogus] [feat] 7") == "[nak]"
+    # A client asks a server it does not know to be Robogene's nothing at all (no protocol request).
+    sent = []
+    client = GrabberClient(lambda request: sent.append(request.to_text()) or server.respond(request))
+    assert client.check_server(False) == [] and sent == []
+    assert [name for name, _ in client.check_server(True)] == ["IFrameGrabberImage", "IFrameGrabberControls"]
+    assert sent == ["[get] [rgif]"]

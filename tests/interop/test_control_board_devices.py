@@ -37,8 +37,15 @@ def start_robogene_dev(procs, net, *args):
     return dev
 
 
+def assert_never_asked_for_fingerprints(yarp_server):
+    """YARP's control board logs "received an unknown request after a VOCAB_GET: rgif" for our
+    fingerprint request: it must never get one (docs/interop.md, the server's identity)."""
+    lines = yarp_server.stdout + yarp_server.stderr
+    assert not any("rgif" in line for line in lines), yarp_server.describe()
+
+
 def test_our_remote_controlboard_drives_yarps_control_board(yarpserver, yarp, ours, procs, net):
-    yarp.fake_motors("/interop/motors", joints=4)
+    motors = yarp.fake_motors("/interop/motors", joints=4)
     program = procs.start("paper_section_3_3", [
         paper_program(), "--device", "remote_controlboard", "--remote", "/interop/motors",
         "--local", "/interop/paper", "--seconds", "2"], net.env)
@@ -59,6 +66,7 @@ def test_our_remote_controlboard_drives_yarps_control_board(yarpserver, yarp, ou
     acc0, vel0, pos0, acc1, vmo1 = (value_of(r) for r in responses(rpc, 5))
     assert (acc0, vel0, pos0, acc1) == ("100.0", "5.0", "40.0", "100.0")
     assert vmo1 == "5.0"  # velocityMove(1, 5) travelled on /interop/paper/command:o over udp
+    assert_never_asked_for_fingerprints(motors)
 
 
 def test_yarps_remote_controlboard_drives_robogene_dev(yarpserver, yarp, ours, procs, net):
@@ -122,7 +130,7 @@ def pid_reply(reply: str) -> str:
 
 def test_our_remote_controlboard_reads_pids_and_torques_from_yarps_control_board(yarpserver, yarp, ours, procs,
                                                                                  net):
-    yarp.fake_motors("/interop/motors", joints=2)
+    motors = yarp.fake_motors("/interop/motors", joints=2)
     # Our remote_controlboard, served again by our controlBoard_nws_yarp as /interop/ourproxy (as the
     # YARP side does below with yarpdev), so that requests typed at our rpc go through its client.
     start_robogene_dev(procs, net, "--device", "controlBoard_nws_yarp", "--subdevice", "remote_controlboard",
@@ -149,6 +157,7 @@ def test_our_remote_controlboard_reads_pids_and_torques_from_yarps_control_board
     rpc = yarp.rpc("/interop/motors/rpc:i")
     rpc.send("[get] [pid] [pid] [pos] 1")
     assert pid_reply(responses(rpc, 1)[0]) == PID_POS_1
+    assert_never_asked_for_fingerprints(motors)
 
 
 def test_yarps_remote_controlboard_reads_pids_and_torques_from_robogene_dev(yarpserver, yarp, ours, procs, net):

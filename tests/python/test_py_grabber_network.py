@@ -104,16 +104,20 @@ def test_a_python_camera_read_by_the_python_remote_grabber(name_server):
     assert network.query("/pycam") is None and network.query("/pycam/rpc") is None
 
 
-def test_a_python_camera_answers_on_both_ports_as_yarp_35(name_server):
+def test_a_python_camera_answers_on_both_ports_as_yarp_3(name_server):
+    """The shapes of YARP 3.5's frame grabbers, with a set answered as YARP 3.12.3 answers it; both
+    ports say they are Robogene's (server_identity), in the reply to the admin [prop] [get]."""
     network = Network(name_server.address)
     with python_camera(64, 48) as camera:
         with GrabberNws(camera.view(DeviceDriver), "/pycam", network=network):
             for port in ("/pycam/rpc", "/pycam"):  # YARP's remote_grabber asks the image port
                 assert network.rpc(port, Bottle.from_text("[fgi] [get] [w]")).to_text() == "[fgi] [w] [is] 64"
-                assert network.rpc(port, Bottle.from_text("[fgc] [set] [feat] 7 0.25")).to_text() == ""
+                assert network.rpc(port, Bottle.from_text("[fgc] [set] [feat] 7 0.25")).to_text() == "[fgc] [set] 1"
                 assert network.rpc(port, Bottle.from_text("[fgc] [get] [feat] 7")).to_text() == \
                     "[fgc] [feat] [is] 0.25"
-                assert network.rpc(port, Bottle.from_text("[fgc] [set] [feat] 7 2.0")).to_text() == "[nak]"
+                assert network.rpc(port, Bottle.from_text("[fgc] [set] [feat] 7 2.0")).to_text() == "[fgc] [set] 0"
+                assert network.rpc(port, Bottle.from_text("[fgc] [bogus] [feat] 7")).to_text() == "[nak]"
+                assert network.admin(port, Bottle.from_text('[prop] [get] robogene_service')).to_text() == "grabber"
 
 
 def test_cpp_tools_read_a_python_camera(name_server, procs, robogene_bin, yarp_env):

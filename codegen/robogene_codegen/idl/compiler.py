@@ -516,9 +516,32 @@ class _Checker:
                                f"with {_vocab_text(prefix)}")
                 aliases = self._command_aliases(doc, c.get("aliases", []), members, routes)
                 command = Command(c["port"], c["doc"], prefix, routes + aliases, aliases)
+        replies = data.get("replies", "stamped")
         return Service(data["service"], data["version"], data["doc"], data["rpc_port"], members,
                        protocol, introspection, streams, command, doc.file, doc.mark(("service",)),
-                       replies=data.get("replies", "stamped"))
+                       replies=replies, command_reply=self._command_reply(doc, replies, members))
+
+    def _command_reply(self, doc: Document, replies: str, members: list[Interface]) -> Optional[tuple]:
+        """The reply to a scoped command: request items (each present in every command of the
+        service) and "result" once, last."""
+        if "command_reply" not in doc.data:
+            return None
+        items = tuple(doc.data["command_reply"])
+        mark = doc.mark(("command_reply",))
+        if replies != "scoped":
+            self.error(mark, "command_reply belongs only to a service with 'replies: scoped'")
+            return None
+        if items.count("result") != 1 or items[-1] != "result":
+            self.error(mark, "command_reply must end with 'result' and name it once")
+            return None
+        shortest = min((len(m.wire) + len(m.args) for i in members for m in i.methods
+                        if m.wire and not m.results), default=0)
+        for k, item in enumerate(items[:-1]):
+            if item >= shortest:
+                self.error(doc.mark(("command_reply", k)), f"command_reply item {item} is past the end "
+                           f"of the shortest command of this service ({shortest} items)")
+                return None
+        return items
 
     def _command_aliases(self, doc: Document, raws: list, members: list[Interface], routes: list) -> list:
         """Other heads for commands of the service (YARP's [dtq] j for setRefTorque(j, t)): each

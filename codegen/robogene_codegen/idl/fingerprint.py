@@ -61,6 +61,7 @@ def assign_interface(iface: Interface) -> None:
 def assign_service(service: Service) -> None:
     canonical = {
         **({"replies": service.replies} if service.replies != "stamped" else {}),
+        **({"command_reply": list(service.command_reply)} if service.command_reply else {}),
         "service": service.name, "version": service.version, "rpc_port": service.rpc_port,
         "interfaces": [[i.name, i.fingerprint] for i in service.interfaces],
         "protocol": None if service.protocol is None else {

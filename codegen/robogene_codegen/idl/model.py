@@ -172,8 +172,12 @@ class Service:
     fingerprint: str = ""
     canonical: str = ""
     # "stamped": control-board replies ([ok]/[fail], [is] ... [tsta] n t [ok]); "scoped": YARP's
-    # frame-grabber replies (a command's success is an empty bottle, a failure [nak]).
+    # frame-grabber replies (a failure [nak]; a command's success an empty bottle unless
+    # command_reply says otherwise).
     replies: str = "stamped"
+    # A scoped command's reply: request items by index and "result" (int32 1 done, 0 refused),
+    # as YARP 3.12.3's frame grabbers answer a set ([fgc] [set] 1). None: the empty bottle.
+    command_reply: Optional[tuple] = None
 
 
 @dataclass

@@ -58,7 +58,8 @@ def _explain(doc: Document, err: jsonschema.ValidationError) -> list[IdlError]:
                                   "id_layout", "addresses", "classes"),
                  "board_config": ("board_config", "doc", "protocol", "parameters", "timeouts",
                                   "broadcasts")}[kinds[0]]
-        allowed_extra = {"interface": (), "service": ("protocol", "introspection", "streams", "command"),
+        allowed_extra = {"interface": (), "service": ("protocol", "introspection", "streams", "command", "replies",
+                                                     "command_reply"),
                          "types": (), "can_protocol": ("enums", "flags"), "board_config": ()}[kinds[0]]
         missing = [k for k in needs if k not in err.instance]
         if missing:

@@ -90,6 +90,9 @@ class Port {
   bool write(const Bottle& b, Bottle& reply);
   // Attached to every later write as "D <envelope>" (empty = none).
   void set_envelope(std::string envelope);
+  // A user-defined property of the port, as admin [prop] [set] key value sets it: any peer may
+  // read it with [prop] [get] key, answered by the port itself (YARP 3 ports do the same).
+  void set_property(const std::string& key, const Value& value);
 
   // Installs a reader; without one, messages wait for read().
   void set_reader(Reader r);

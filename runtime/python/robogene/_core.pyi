@@ -393,6 +393,10 @@ class Port:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
         """
+    def set_property(self, key: str, value: str) -> None:
+        """
+        Sets a user-defined property of the port, which any peer reads with the admin message [prop] [get] key (as [prop] [set] key value would set it).
+        """
     def write(self, bottle: Bottle | list | tuple) -> bool:
         """
         Sends to every output; False when there is none that took it.
@@ -479,6 +483,10 @@ class BufferedPort:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
         """
+    def set_property(self, key: str, value: str) -> None:
+        """
+        Sets a user-defined property of the port, which any peer reads with the admin message [prop] [get] key (as [prop] [set] key value would set it).
+        """
     def write(self, bottle: Bottle | list | tuple | None = None) -> bool:
         """
         Sends `bottle`, or the prepared one, to every output; False when no output took it.
@@ -556,6 +564,10 @@ class RpcClient:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
         """
+    def set_property(self, key: str, value: str) -> None:
+        """
+        Sets a user-defined property of the port, which any peer reads with the admin message [prop] [get] key (as [prop] [set] key value would set it).
+        """
     @property
     def contact(self) -> Contact:
         """
@@ -624,6 +636,10 @@ class RpcServer:
     def set_envelope(self, envelope: typing.Any) -> None:
         """
         Attaches a Stamp (or raw envelope text) to every later write; None removes it.
+        """
+    def set_property(self, key: str, value: str) -> None:
+        """
+        Sets a user-defined property of the port, which any peer reads with the admin message [prop] [get] key (as [prop] [set] key value would set it).
         """
     @property
     def contact(self) -> Contact:

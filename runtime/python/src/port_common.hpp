@@ -151,6 +151,13 @@ void def_port_common(Cls& cls, const char* kind, bool reopen) {
            [](Owned<T>& o, const py::object& envelope) { port_of(o.obj).set_envelope(envelope_text(envelope)); },
            py::arg("envelope"),
            "Attaches a Stamp (or raw envelope text) to every later write; None removes it.")
+      .def("set_property",
+           [](Owned<T>& o, const std::string& key, const std::string& value) {
+             port_of(o.obj).set_property(key, Value(value));
+           },
+           py::arg("key"), py::arg("value"),
+           "Sets a user-defined property of the port, which any peer reads with the admin message "
+           "[prop] [get] key (as [prop] [set] key value would set it).")
       .def("__repr__", [kind](Owned<T>& o) { return describe_owned(o, kind); });
 }
 

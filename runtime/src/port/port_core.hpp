@@ -98,6 +98,7 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
   std::string describe() const;
   Bottle admin(const Bottle& cmd);
   Bottle admin_prop(const Bottle& cmd);  // [prop] [get] / [prop] [set] (port_properties.cpp)
+  void put_property(const std::string& key, const Value& value);  // with mutex held
   void add_unit(std::shared_ptr<OutputUnit> unit);
   void drop_output(const std::shared_ptr<OutputUnit>& unit, const std::string& why);
   std::optional<Contact> resolve(const std::string& port_name);

@@ -185,6 +185,20 @@ bool set_process_sched(int priority, int policy) {
 
 }  // namespace
 
+void Port::Core::put_property(const std::string& key, const Value& value) {
+  Bottle kept;
+  for (const Value& item : properties) {
+    if (!(item.is_list() && word(item.as_list().get(0)) == key)) kept.add(item);
+  }
+  kept.add(Value(Bottle{Value(key), value}));
+  properties = std::move(kept);
+}
+
+void Port::set_property(const std::string& key, const Value& value) {
+  std::lock_guard<std::mutex> lock(core_->mutex);
+  core_->put_property(key, value);
+}
+
 Bottle Port::Core::admin_prop(const Bottle& cmd) {
   const std::string action = word(cmd.get(1));
   const std::string key = word(cmd.get(2));
@@ -222,12 +236,7 @@ Bottle Port::Core::admin_prop(const Bottle& cmd) {
   if (action != "set") return fail("property action not known");  // YARP's words
   if (key.empty()) return fail("[prop] [set] needs a property name or a port name");
   if (!is_port) {
-    Bottle kept;
-    for (const Value& item : properties) {
-      if (!(item.is_list() && word(item.as_list().get(0)) == key)) kept.add(item);
-    }
-    kept.add(Value(Bottle{Value(key), cmd.get(3)}));
-    properties = std::move(kept);
+    put_property(key, cmd.get(3));
     return ok();
   }
 

@@ -24,7 +24,7 @@ using Remote = robogene::test::InProcessBoard;
 // Paper section 3.3 again, with the device on the far side of the RPC protocol (section 3.4).
 TEST(ControlboardClient, PaperSection33ThroughTheNetworkWrappers) {
   Remote remote;
-  const auto listed = remote.client->check_server();
+  const auto listed = remote.client->check_server(true);
   ASSERT_EQ(listed.size(), 6u);  // test_motor: encoders, position, velocity, torque, PID, control mode
   EXPECT_EQ(listed[1].first, "IPositionControl");
 
@@ -168,7 +168,7 @@ TEST(ControlboardClient, FingerprintMismatchIsRefusedWithAClearError) {
     return reply;
   });
   try {
-    remote.client->check_server();
+    remote.client->check_server(true);
     FAIL() << "accepted a server built from another IDL";
   } catch (const robogene::Error& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -178,11 +178,16 @@ TEST(ControlboardClient, FingerprintMismatchIsRefusedWithAClearError) {
   }
 }
 
-TEST(ControlboardClient, AYarpServerIsCheckedByItsProtocolVersion) {
-  // A YARP 3 controlBoard_nws_yarp answers [fail] to the introspection request.
-  auto yarp_like = [](const char* minor) {
-    return [minor](const Bottle& req, Bottle reply) {
-      if (req.size() == 2 && req[1].as_vocab() == vocab("rgif")) return Bottle::from_text("[fail]");
+TEST(ControlboardClient, AYarpServerIsCheckedByItsProtocolVersionAndNeverAskedForFingerprints) {
+  // A YARP 3 controlBoard_nws_yarp logs "unknown request after a VOCAB_GET: rgif" as an error:
+  // a server not known to be Robogene's must never see that request.
+  int asked_rgif = 0;
+  auto yarp_like = [&asked_rgif](const char* minor) {
+    return [minor, &asked_rgif](const Bottle& req, Bottle reply) {
+      if (req.size() == 2 && req[1].as_vocab() == vocab("rgif")) {
+        ++asked_rgif;
+        return Bottle::from_text("[fail]");
+      }
       if (req.size() == 2 && req[1].as_vocab() == vocab("prot")) {
         return Bottle::from_text(std::string("[prot] 1 ") + minor + " 0 [ok]");
       }
@@ -190,13 +195,28 @@ TEST(ControlboardClient, AYarpServerIsCheckedByItsProtocolVersion) {
     };
   };
   Remote same(yarp_like("9"));
-  EXPECT_TRUE(same.client->check_server().empty());
+  EXPECT_TRUE(same.client->check_server(false).empty());
   Remote older(yarp_like("8"));
   try {
-    older.client->check_server();
+    older.client->check_server(false);
     FAIL() << "accepted protocol 1.8";
   } catch (const robogene::Error& e) {
     EXPECT_EQ(std::string(e.what()), "controlboard server speaks protocol 1.8, this client speaks 1.9");
+  }
+  EXPECT_EQ(asked_rgif, 0);
+}
+
+TEST(ControlboardClient, AServerThatSaysItIsRobogenesMustListItsInterfaces) {
+  Remote remote([](const Bottle& req, Bottle reply) {
+    if (req.size() == 2 && req[1].as_vocab() == vocab("rgif")) return Bottle::from_text("[fail]");
+    return reply;
+  });
+  try {
+    remote.client->check_server(true);
+    FAIL() << "accepted a server that does not list its interfaces";
+  } catch (const robogene::Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "controlboard server says it is Robogene's but does not list its interfaces: [fail]");
   }
 }
 

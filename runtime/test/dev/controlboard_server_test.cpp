@@ -268,14 +268,14 @@ TEST(GrabberServer, ControlsAndSizeByRpc) {
   ASSERT_TRUE(device.view(driver));
   GrabberServer server(*driver);
   auto ask = [&](const char* text) { return server.respond(Bottle::from_text(text)).to_text(); };
-  // YARP 3.5's shapes (see grabber_nws_test.cpp): values after [is], empty replies to sets.
+  // YARP 3's shapes (see grabber_nws_test.cpp): values after [is], sets answered as 3.12.3 does.
   EXPECT_EQ(ask("[fgi] [get] [w]"), "[fgi] [w] [is] 32");
   EXPECT_EQ(ask("[fgi] [get] [h]"), "[fgi] [h] [is] 24");
-  EXPECT_EQ(ask("[fgc] [set] [feat] 8 0.25"), "");  // gain
+  EXPECT_EQ(ask("[fgc] [set] [feat] 8 0.25"), "[fgc] [set] 1");  // gain
   EXPECT_EQ(ask("[fgc] [get] [feat] 8"), "[fgc] [feat] [is] 0.25");
   EXPECT_EQ(ask("[fgc] [has] [feat] 10"), "[fgc] [has] [feat] 1952540006 0");  // no focus
-  EXPECT_EQ(ask("[fgc] [set] [feat] 99 0.5"), "[nak]");  // not a CameraFeature
-  EXPECT_EQ(ask("[fgc] [set] [mode] 7 2"), "");          // shutter: auto
+  EXPECT_EQ(ask("[fgc] [set] [feat] 99 0.5"), "[fgc] [set] 0");  // not a CameraFeature
+  EXPECT_EQ(ask("[fgc] [set] [mode] 7 2"), "[fgc] [set] 1");          // shutter: auto
   EXPECT_EQ(ask("[fgc] [get] [mode] 7"), "[fgc] [mode] [is] 2");
   EXPECT_EQ(ask("[get] [prot]"), "[nak]");  // no protocol declared; unknown requests get [nak]
 }

@@ -97,7 +97,8 @@ def route_init(r: Route, service: Service) -> str:
     path = ", ".join(f'vocab("{v}")' for v in r.wire)
     stamped = "true" if r.method.results and r.method.stamp else "false"
     tail = "true" if ok_tail(r.method, service) else "false"
-    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, {tail}, &{r.handler}}}"
+    command = "false" if r.method.results else "true"
+    return f"{{{{{path}}}, {len(r.wire)}, {stamped}, {tail}, {command}, &{r.handler}}}"
 
 
 def command_routes(service: Service) -> list:

@@ -25,6 +25,7 @@ from .network import _call_or_empty, _network, _port_name
 from .property import ConfigError, Property
 from .rpc import ImageError, decode_image
 from .rpc import RpcServer as Dispatch
+from .server_identity import announce_service, serves_robogene
 
 _log = logging.getLogger("robogene.dev")
 
@@ -53,6 +54,8 @@ class GrabberNws:
             self._ports.append(self._rpc)
             self._image = Port(name, **kw)
             self._ports.append(self._image)
+            for port in (self._rpc, self._image):  # both answer requests (server_identity)
+                announce_service(port, "grabber")
         except Exception:
             self.close()
             raise
@@ -143,7 +146,7 @@ class RemoteGrabber(GrabberClient, DeviceDriver):
         try:
             self._client = RpcClient(f"{self._local}/rpc_client", server=f"{self._remote}/rpc", **kw)
             self._client.call(Bottle.from_text("[fgi] [get] [w]"))  # raises naming an absent server
-            self.check_server()
+            self.check_server(serves_robogene(self._network, f"{self._remote}/rpc", self.SERVICE))
             self._images = BufferedPort(self._local, **kw)
             self._images.on_read(self._received)
             (self._network or Network()).connect(self._remote, self._local, carrier)

@@ -21,6 +21,7 @@ from typing import Any, List, Optional
 from .. import Bottle, BufferedPort, Error, Network, Port, RpcServer, Value
 from .property import ConfigError, Property
 from .rpc import RpcServer as Dispatch
+from .server_identity import announce_service
 
 
 def _network(config: Property) -> Optional[Network]:
@@ -93,6 +94,7 @@ class ControlboardNws:
         try:
             self._rpc = RpcServer(f"{name}/rpc:i", lambda request, info: self._dispatch.respond(request), **kw)
             self._ports.append(self._rpc)
+            announce_service(self._rpc, "controlboard")  # so our clients may ask [get] [rgif]
             self._command = BufferedPort(f"{name}/command:i", **kw)
             self._ports.append(self._command)
             self._command.on_read(lambda message, info: self._dispatch.command(message))

@@ -25,6 +25,7 @@ from .device_driver import DeviceDriver
 from .generated.clients import ControlboardClient
 from .property import ConfigError, Property
 from .network import _call_or_empty, _network, _port_name
+from .server_identity import serves_robogene
 
 _log = logging.getLogger("robogene.dev")
 
@@ -69,7 +70,8 @@ class RemoteControlboard(ControlboardClient, DeviceDriver):
         try:
             self._client = RpcClient(f"{local}/rpc:o", server=f"{remote}/rpc:i", **kw)
             self._client.call(Bottle.from_text("[get] [prot]"))  # raises naming an absent server
-            self.check_server()
+            # Only a server that says it is Robogene's is asked for its fingerprints (server_identity).
+            self.check_server(serves_robogene(self._network, f"{remote}/rpc:i", self.SERVICE))
             axes = self.getAxes()
             if axes is None:
                 raise Error(f"{remote}/rpc:i does not answer [get] [axes]")

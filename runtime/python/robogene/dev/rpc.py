@@ -5,9 +5,9 @@ request Bottles by calling a device, and the base of the generated clients. The 
 reply shapes are YARP 3's, as in the generated C++ (runtime/src/dev/generated/*_server.cpp):
 [ok] / [fail] for commands, [is] <echo> <values> [tsta] <n> <t> [ok] for queries (no stamp for
 those the IDL marks `stamp: false`), [nak] for requests of fewer than two items. In "scoped"
-services (YARP's frame grabbers) a command's success is an empty bottle, a failure [nak], and a
-query with a reply head (REPLY_HEADS) is that head and its values. Needs the compiled core
-(robogene.Bottle)."""
+services (YARP's frame grabbers) a failure is [nak], a command is answered as COMMAND_REPLIES says
+(YARP 3.12.3's [fgc] [set] 1 or 0; an empty bottle where the IDL gives no form), and a query with a
+reply head (REPLY_HEADS) is that head and its values. Needs the compiled core (robogene.Bottle)."""
 from __future__ import annotations
 
 import math
@@ -18,8 +18,8 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 from .. import Bottle, Error, Value, vocab
 from .generated import interfaces as _interfaces
 from .generated import types as _types
-from .generated.wire import (COMMANDS, ENUMS, INTERFACES, REPLIES, REPLY_HEADS, SERVICES, STREAMS,
-                             STRUCTS, USAGE)
+from .generated.wire import (COMMAND_REPLIES, COMMANDS, ENUMS, INTERFACES, REPLIES, REPLY_HEADS, SERVICES,
+                             STREAMS, STRUCTS, USAGE)
 from .image import ImageRgb
 
 _INT32 = (-(2 ** 31), 2 ** 31 - 1)
@@ -141,6 +141,7 @@ class RpcServer:
         self._device = device
         self._scoped = REPLIES.get(service) == "scoped"
         self._failure = "nak" if self._scoped else "fail"
+        self._command_reply = COMMAND_REPLIES.get(service)
         self._implemented = [n for n in names if isinstance(device, getattr(_interfaces, n))]
         self._routes: Dict[Tuple[int, ...], Tuple] = {}
         for iface in names:
@@ -201,6 +202,8 @@ class RpcServer:
             echo, args, results, stamped, candidates = self._routes[key]
             stamp = self._stamp() if stamped else 0
             reply = self._call(request, len(key), echo, args, results, candidates)
+            if not results and self._command_reply:
+                return self._command_answer(request, reply is not None)
             if reply is None:
                 return _single(self._failure)
             if stamped:
@@ -210,6 +213,14 @@ class RpcServer:
             return reply
         self._stamp()  # an unknown query still takes a number, as in YARP
         return _single(self._failure)
+
+    def _command_answer(self, request: Bottle, done: bool) -> Bottle:
+        """YARP 3.12.3's answer to a frame-grabber set (commit e3442205f): the request's items as
+        vocabs, whatever spelling the request used, then int32 1 if the device did it, else 0."""
+        reply = Bottle()
+        for item in self._command_reply:
+            reply.add(Value.int32(1 if done else 0) if item == "result" else Value.vocab(vocab_of(request[item])))
+        return reply
 
     def publish(self, stream: str) -> Optional[Bottle]:
         """The message the stream port publishes now (None when the device cannot provide it):
@@ -317,7 +328,7 @@ class RpcClient:
     def _command(self, wire, arg_types, args) -> bool:
         reply = self._request(wire, arg_types, args)
         if REPLIES.get(self.SERVICE) == "scoped":
-            return reply is not None and len(reply) == 0  # YARP's frame grabbers: empty on success
+            return reply is not None and _scoped_command_done(self.SERVICE, wire, reply)
         return reply is not None and len(reply) >= 1 and vocab_of(reply[0]) == _OK
 
     def _query(self, wire, arg_types, args, result_types, reply=None):
@@ -348,29 +359,33 @@ class RpcClient:
             return None
         return values[0] if len(values) == 1 else tuple(values)
 
-    def check_server(self) -> List[Tuple[str, str]]:
+    def check_server(self, robogene_server: bool) -> List[Tuple[str, str]]:
         """The (name, fingerprint) of the server's interfaces; raises robogene.Error naming an
-        interface built from different IDL, or a YARP 3 server of another protocol version."""
+        interface built from different IDL, or a YARP 3 server of another protocol version. Only
+        a server known to be Robogene's (`robogene_server`: its port says so,
+        robogene.dev.server_identity) is asked for its fingerprints: YARP 3's log every request
+        they do not know as an error. Any other is checked by its protocol version where the
+        service has one."""
         fingerprint, names, protocol, introspection = SERVICES[self.SERVICE]
-        if introspection:
+        if introspection and robogene_server:
             reply = self._transport(_path(introspection))
-            if len(reply) >= 3 and vocab_of(reply[0]) == _IS and reply[2].is_list():
-                theirs = []
-                for item in reply[2].as_list():
-                    pair = item.as_list() if item.is_list() else None
-                    if pair is None or len(pair) != 2 or not pair[0].is_string() or not pair[1].is_string():
-                        raise Error(f"{self.SERVICE} server: malformed interface entry {item.to_text()}")
-                    name, fp = pair[0].as_string(), pair[1].as_string()
-                    if name in names and INTERFACES[name][0] != fp:
-                        raise Error(f"{self.SERVICE} server: interface {name} has fingerprint {fp}, this "
-                                    f"client was generated for {INTERFACES[name][0]} (the two sides were "
-                                    "built from different IDL)")
-                    theirs.append((name, fp))
-                return theirs
-        if not protocol and REPLIES.get(self.SERVICE) == "scoped":
-            return []  # a YARP 3 frame grabber: its interfaces are not listed
+            if len(reply) < 3 or vocab_of(reply[0]) != _IS or not reply[2].is_list():
+                raise Error(f"{self.SERVICE} server says it is Robogene's but does not list its interfaces: "
+                            f"{reply.to_text()}")
+            theirs = []
+            for item in reply[2].as_list():
+                pair = item.as_list() if item.is_list() else None
+                if pair is None or len(pair) != 2 or not pair[0].is_string() or not pair[1].is_string():
+                    raise Error(f"{self.SERVICE} server: malformed interface entry {item.to_text()}")
+                name, fp = pair[0].as_string(), pair[1].as_string()
+                if name in names and INTERFACES[name][0] != fp:
+                    raise Error(f"{self.SERVICE} server: interface {name} has fingerprint {fp}, this "
+                                f"client was generated for {INTERFACES[name][0]} (the two sides were "
+                                "built from different IDL)")
+                theirs.append((name, fp))
+            return theirs
         if not protocol:
-            raise Error(f"{self.SERVICE} server does not list its interfaces")
+            return []  # a YARP 3 server of a service without a protocol request: nothing to ask
         reply = self._transport(_path(protocol[0]))
         if len(reply) < 3 or vocab_of(reply[0]) != vocab(protocol[1]) or not reply[1].is_int() \
                 or not reply[2].is_int():
@@ -379,6 +394,24 @@ class RpcClient:
             raise Error(f"{self.SERVICE} server speaks protocol {reply[1].as_int()}.{reply[2].as_int()}, "
                         f"this client speaks {protocol[2][0]}.{protocol[2][1]}")
         return []
+
+
+def _scoped_command_done(service: str, wire, reply: Bottle) -> bool:
+    """Whether a frame grabber did a set, from its reply: YARP 3.12.3's form (COMMAND_REPLIES,
+    [fgc] [set] 1 or 0), or the empty bottle of Robogene's servers before it. YARP 3.5's servers
+    answer [nak] to every set, done or not, and 3.12.3's to one they cannot parse: a failure."""
+    form = COMMAND_REPLIES.get(service)
+    if len(reply) == 0:
+        return True
+    if not form or len(reply) != len(form):
+        return False
+    for k, item in enumerate(form):
+        if item == "result":
+            if not reply[k].is_int():
+                return False
+        elif vocab_of(reply[k]) != vocab(wire[item]):
+            return False
+    return reply[len(form) - 1].as_int() != 0
 
 
 _ROWS_BOTTOM_UP = 1 << 16

@@ -36,7 +36,7 @@ bool ControlboardClient::query(const Bottle& request, Bottle& reply, std::size_t
   return reply.size() >= 2 + results && rpc::vocab_of(reply[0]) == vocab("is");
 }
 
-std::vector<std::pair<std::string, std::string>> ControlboardClient::check_server() {
+std::vector<std::pair<std::string, std::string>> ControlboardClient::check_server(bool robogene_server) {
   static const std::map<std::string, std::string> ours = {
       {"IEncoders", IEncoders::kFingerprint},
       {"IPositionControl", IPositionControl::kFingerprint},
@@ -46,11 +46,14 @@ std::vector<std::pair<std::string, std::string>> ControlboardClient::check_serve
       {"IControlMode", IControlMode::kFingerprint},
   };
   std::vector<std::pair<std::string, std::string>> theirs;
-  Bottle reply;
-  if (!transport_(start({"get", "rgif"}), reply)) {
-    throw Error("controlboard server: no reply to the introspection request");
-  }
-  if (reply.size() >= 3 && rpc::vocab_of(reply[0]) == vocab("is") && reply[2].is_list()) {
+  if (robogene_server) {
+    Bottle reply;
+    if (!transport_(start({"get", "rgif"}), reply)) {
+      throw Error("controlboard server: no reply to the introspection request");
+    }
+    if (reply.size() < 3 || rpc::vocab_of(reply[0]) != vocab("is") || !reply[2].is_list()) {
+      throw Error("controlboard server says it is Robogene's but does not list its interfaces: " + reply.to_text());
+    }
     for (const Value& item : reply[2].as_list()) {
       if (!item.is_list() || item.as_list().size() != 2 || !item.as_list()[0].is_string() ||
           !item.as_list()[1].is_string()) {

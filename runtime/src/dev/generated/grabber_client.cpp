@@ -28,7 +28,15 @@ Bottle start(std::initializer_list<const char*> path) {
 bool GrabberClient::command(const Bottle& request) {
   Bottle reply;
   if (!transport_(request, reply)) return false;
-  return reply.empty();  // YARP's frame grabbers: success is an empty reply, a failure [nak]
+  // YARP 3.12.3's frame grabbers answer <item 0> <item 1> <int32 done> ([fgc] [set] 1); Robogene's
+  // servers before that answered success with an empty bottle. YARP 3.5's servers answer [nak] to
+  // every set, done or not, and 3.12.3's to one they cannot parse: reported as a failure.
+  if (reply.empty()) return true;
+  if (reply.size() != 3) return false;
+  if (rpc::vocab_of(reply[0]) != rpc::vocab_of(request[0])) return false;
+  if (rpc::vocab_of(reply[1]) != rpc::vocab_of(request[1])) return false;
+  if (!reply[2].is_int()) return false;
+  return reply[2].as_int64() != 0;
 }
 
 bool GrabberClient::query(const Bottle& request, Bottle& reply, std::size_t results) {
@@ -36,17 +44,20 @@ bool GrabberClient::query(const Bottle& request, Bottle& reply, std::size_t resu
   return reply.size() >= 2 + results && rpc::vocab_of(reply[0]) == vocab("is");
 }
 
-std::vector<std::pair<std::string, std::string>> GrabberClient::check_server() {
+std::vector<std::pair<std::string, std::string>> GrabberClient::check_server(bool robogene_server) {
   static const std::map<std::string, std::string> ours = {
       {"IFrameGrabberImage", IFrameGrabberImage::kFingerprint},
       {"IFrameGrabberControls", IFrameGrabberControls::kFingerprint},
   };
   std::vector<std::pair<std::string, std::string>> theirs;
-  Bottle reply;
-  if (!transport_(start({"get", "rgif"}), reply)) {
-    throw Error("grabber server: no reply to the introspection request");
-  }
-  if (reply.size() >= 3 && rpc::vocab_of(reply[0]) == vocab("is") && reply[2].is_list()) {
+  if (robogene_server) {
+    Bottle reply;
+    if (!transport_(start({"get", "rgif"}), reply)) {
+      throw Error("grabber server: no reply to the introspection request");
+    }
+    if (reply.size() < 3 || rpc::vocab_of(reply[0]) != vocab("is") || !reply[2].is_list()) {
+      throw Error("grabber server says it is Robogene's but does not list its interfaces: " + reply.to_text());
+    }
     for (const Value& item : reply[2].as_list()) {
       if (!item.is_list() || item.as_list().size() != 2 || !item.as_list()[0].is_string() ||
           !item.as_list()[1].is_string()) {
@@ -64,7 +75,7 @@ std::vector<std::pair<std::string, std::string>> GrabberClient::check_server() {
     }
     return theirs;
   }
-  return theirs;  // a YARP 3 frame grabber: its interfaces are not listed
+  return theirs;  // a YARP 3 server of a service without a protocol request: nothing to ask
 }
 
 bool GrabberClient::getImage(ImageRgb& image) {

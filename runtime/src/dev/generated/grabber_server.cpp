@@ -24,6 +24,7 @@ struct Route {
   std::size_t length;
   bool stamped;  // a query whose reply carries [tsta] <n> <t>; YARP's IPidControl replies do not
   bool ok_tail;  // a success ends in [ok] (not after a reply head of the IDL, nor in scoped services)
+  bool command;  // no results: a set
   Handler handler;
 };
 
@@ -183,15 +184,15 @@ bool h_fgi_get_w(const GrabberServer::Interfaces& d, const Bottle& req, Bottle& 
 }
 
 const Route kRoutes[] = {
-    {{vocab("fgc"), vocab("get"), vocab("actv")}, 3, false, false, &h_fgc_get_actv},
-    {{vocab("fgc"), vocab("get"), vocab("feat")}, 3, false, false, &h_fgc_get_feat},
-    {{vocab("fgc"), vocab("get"), vocab("mode")}, 3, false, false, &h_fgc_get_mode},
-    {{vocab("fgc"), vocab("has"), vocab("feat")}, 3, false, false, &h_fgc_has_feat},
-    {{vocab("fgc"), vocab("set"), vocab("actv")}, 3, false, false, &h_fgc_set_actv},
-    {{vocab("fgc"), vocab("set"), vocab("feat")}, 3, false, false, &h_fgc_set_feat},
-    {{vocab("fgc"), vocab("set"), vocab("mode")}, 3, false, false, &h_fgc_set_mode},
-    {{vocab("fgi"), vocab("get"), vocab("h")}, 3, false, false, &h_fgi_get_h},
-    {{vocab("fgi"), vocab("get"), vocab("w")}, 3, false, false, &h_fgi_get_w},
+    {{vocab("fgc"), vocab("get"), vocab("actv")}, 3, false, false, false, &h_fgc_get_actv},
+    {{vocab("fgc"), vocab("get"), vocab("feat")}, 3, false, false, false, &h_fgc_get_feat},
+    {{vocab("fgc"), vocab("get"), vocab("mode")}, 3, false, false, false, &h_fgc_get_mode},
+    {{vocab("fgc"), vocab("has"), vocab("feat")}, 3, false, false, false, &h_fgc_has_feat},
+    {{vocab("fgc"), vocab("set"), vocab("actv")}, 3, false, false, true, &h_fgc_set_actv},
+    {{vocab("fgc"), vocab("set"), vocab("feat")}, 3, false, false, true, &h_fgc_set_feat},
+    {{vocab("fgc"), vocab("set"), vocab("mode")}, 3, false, false, true, &h_fgc_set_mode},
+    {{vocab("fgi"), vocab("get"), vocab("h")}, 3, false, false, false, &h_fgi_get_h},
+    {{vocab("fgi"), vocab("get"), vocab("w")}, 3, false, false, false, &h_fgi_get_w},
 };
 
 // The answer to `help` ([many] and one string per line), as YARP's DeviceResponder gives it.
@@ -227,6 +228,16 @@ Bottle single(const char* word) {
   Bottle b;
   b.add(Value::vocab(vocab(word)));
   return b;
+}
+
+// A command's answer as YARP 3.12.3's frame grabbers give it (commit e3442205f: [fgc] [set] 1): the
+// request's items as vocabs, whatever spelling the request used, then whether the device did it.
+Bottle command_reply(const Bottle& req, bool done) {
+  Bottle reply;
+  reply.add(Value::vocab(rpc::vocab_of(req[0])));
+  reply.add(Value::vocab(rpc::vocab_of(req[1])));
+  reply.add(Value::int32(done ? 1 : 0));
+  return reply;
 }
 
 }  // namespace
@@ -285,6 +296,7 @@ Bottle GrabberServer::respond(const Bottle& req) {
     } catch (const std::exception&) {
       ok = false;  // a device that throws answers like one that fails
     }
+    if (route.command) return command_reply(req, ok);
     if (!ok) return single("nak");
     if (route.stamped) {
       rpc::finish_value_reply(reply, stamp, now_seconds());

@@ -4,6 +4,7 @@
 
 #include "robogene/dev/joint_data.hpp"
 #include "robogene/dev/nws/group_requests.hpp"
+#include "robogene/dev/nws/server_identity.hpp"
 #include "robogene/dev/nws/device_port.hpp"
 #include "robogene/envelope.hpp"
 
@@ -62,6 +63,7 @@ void ControlboardNws::open(DeviceDriver& device, const Searchable& config) {
     const bool done = carry_out(*server, data);
     if (reply) *reply = Bottle{Value::vocab(done ? "ok" : "fail")};
   });
+  announce_service(rpc_, ControlboardServer::kServiceName);  // so our clients may ask [get] [rgif]
   try {
     if (single_port_) {
       rpc_.open(name, names);

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "robogene/dev/nws/device_port.hpp"
+#include "robogene/dev/nws/server_identity.hpp"
 #include "robogene/envelope.hpp"
 
 namespace robogene::dev {
@@ -28,6 +29,9 @@ void GrabberNws::open(DeviceDriver& device, const Searchable& config) {
   rpc_.set_reader(answer);
   // YARP 3.5's remote_grabber sends its requests to the image port itself.
   image_.set_reader(answer);
+  // Both ports answer requests, so both say they may be asked [get] [rgif].
+  announce_service(rpc_, GrabberServer::kServiceName);
+  announce_service(image_, GrabberServer::kServiceName);
   try {
     rpc_.open(name + "/rpc", names);
     image_.open(name, names);

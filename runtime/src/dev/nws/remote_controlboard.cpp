@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "robogene/dev/nws/device_port.hpp"
+#include "robogene/dev/nws/server_identity.hpp"
 #include "robogene/error.hpp"
 #include "robogene/log.hpp"
 #include "robogene/network.hpp"
@@ -40,7 +41,9 @@ bool RemoteControlboard::open(const Searchable& config) {
   try {
     rpc_.open(local_ + "/rpc:o", *names_);
     rpc_.add_output(remote_ + "/rpc:i", "tcp");
-    check_server();  // throws naming an interface built from different IDL, or a wrong protocol
+    // Throws naming an interface built from different IDL, or a wrong protocol. Only a server
+    // that says it is Robogene's is asked for its fingerprints (server_identity.hpp).
+    check_server(serves_robogene(*names_, remote_ + "/rpc:i", kServiceName));
     if (!getAxes(axes_)) throw Error(remote_ + "/rpc:i does not answer [get] [axes]");
     command_.open(local_ + "/command:o", *names_);
     command_.add_output(remote_ + "/command:i", carrier);

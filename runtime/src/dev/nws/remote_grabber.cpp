@@ -6,6 +6,7 @@
 
 #include "robogene/dev/image_codec.hpp"
 #include "robogene/dev/nws/device_port.hpp"
+#include "robogene/dev/nws/server_identity.hpp"
 #include "robogene/error.hpp"
 #include "robogene/log.hpp"
 #include "robogene/network.hpp"
@@ -45,7 +46,7 @@ bool RemoteGrabber::open(const Searchable& config) {
   try {
     rpc_.open(local_ + "/rpc_client", *names_);
     rpc_.add_output(remote_ + "/rpc", "tcp");
-    check_server();
+    check_server(serves_robogene(*names_, remote_ + "/rpc", kServiceName));  // server_identity.hpp
     images_.open(local_, *names_);
     auto r = network::connect(*names_, remote_, local_, carrier);
     if (!r.ok) throw Error("connecting " + remote_ + " to " + local_ + ": " + r.message);

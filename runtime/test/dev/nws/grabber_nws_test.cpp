@@ -7,9 +7,12 @@
 
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "nws_test_util.hpp"
+#include "robogene/dev/generated/grabber_client.hpp"
 #include "robogene/dev/generated/grabber_server.hpp"
 #include "robogene/dev/generated/interfaces.hpp"
 #include "robogene/dev/nws/remote_grabber.hpp"
@@ -107,9 +110,10 @@ TEST(GrabberNws, ControlsGoThroughRpc) {
   EXPECT_FALSE(has);
 }
 
-// The replies of YARP 3.5's frame grabbers (captured from its frameGrabber_nws_yarp and
-// grabberDual, tests/interop/test_grabber_devices.py): no [is]-first shape, no [tsta]/[ok].
-TEST(GrabberServer, AnswersInTheShapeOfYarp35FrameGrabbers) {
+// The replies of YARP 3's frame grabbers (3.5's captured from its frameGrabber_nws_yarp and
+// grabberDual, tests/interop/test_grabber_devices.py; 3.12.3's in tests/vectors/yarp312/): no
+// [is]-first shape, no [tsta]/[ok]; a set answered as 3.12.3 answers it.
+TEST(GrabberServer, AnswersInTheShapeOfYarp3FrameGrabbers) {
   LocalNameServer ns;
   PolyDriver camera;
   ASSERT_TRUE(camera.open(ns.config("(device fake_grabber) (width 640) (height 480)"))) << camera.last_error();
@@ -117,12 +121,70 @@ TEST(GrabberServer, AnswersInTheShapeOfYarp35FrameGrabbers) {
   auto ask = [&](const char* text) { return server.respond(Bottle::from_text(text)).to_text(); };
   EXPECT_EQ(ask("[fgi] [get] [w]"), "[fgi] [w] [is] 640");
   EXPECT_EQ(ask("[fgi] [get] [h]"), "[fgi] [h] [is] 480");
-  EXPECT_EQ(ask("[fgc] [set] [feat] 7 0.25"), "");
-  EXPECT_EQ(ask("[fgc] [get] [feat] 7"), "[fgc] [feat] [is] 0.25");
+  EXPECT_EQ(ask("[fgc] [set] [feat] 7 0.25"), "[fgc] [set] 1");
+  EXPECT_EQ(ask("fgc set feat 7 0.5"), "[fgc] [set] 1");  // answered in vocabs, as YARP does
+  EXPECT_EQ(ask("[fgc] [set] [feat] 10 0.5"), "[fgc] [set] 0");  // focus: refused
+  EXPECT_EQ(ask("[fgc] [set] [feat] 7"), "[fgc] [set] 0");        // no value: refused too
+  EXPECT_EQ(ask("[fgc] [get] [feat] 7"), "[fgc] [feat] [is] 0.5");
   EXPECT_EQ(ask("[fgc] [has] [feat] 7"), "[fgc] [has] [feat] 1952540006 1");
   EXPECT_EQ(ask("[fgc] [has] [feat] 10"), "[fgc] [has] [feat] 1952540006 0");
   EXPECT_EQ(ask("[fgc] [get] [feat] 10"), "[nak]");  // focus: fake_grabber has none
   EXPECT_EQ(ask("[fgc] [bogus] [feat] 7"), "[nak]");
+}
+
+// What each server's answer to a set means to our client: YARP 3.12.3's [fgc] [set] <int32> says
+// whether it was done; Robogene's servers before it answered success with an empty bottle;
+// YARP 3.5's answer [nak] to every set and 3.12.3's to one they cannot parse.
+TEST(GrabberClient, ReadsEveryFormOfASetReply) {
+  Bottle next;
+  std::vector<Bottle> sent;
+  GrabberClient client([&](const Bottle& request, Bottle& reply) {
+    sent.push_back(request);
+    reply = next;
+    return true;
+  });
+  auto set_with = [&](const char* reply_text) {
+    next = Bottle::from_text(reply_text);
+    return client.setFeature(CameraFeature::shutter, 0.25);
+  };
+  EXPECT_TRUE(set_with("[fgc] [set] 1"));
+  EXPECT_FALSE(set_with("[fgc] [set] 0"));
+  EXPECT_TRUE(set_with(""));
+  EXPECT_FALSE(set_with("[nak]"));
+  EXPECT_FALSE(set_with("[fgc] [set]"));          // no result
+  EXPECT_FALSE(set_with("[fgc] [set] [ok]"));     // a result that is not an int
+  EXPECT_FALSE(set_with("[fgc] [get] 1"));        // not the request's head
+  EXPECT_FALSE(set_with("[fgc] [set] 1 [ok]"));   // not YARP's form
+  next = Bottle::from_text("[fgc] [set] 1");
+  EXPECT_TRUE(client.setActive(CameraFeature::shutter, true));
+  EXPECT_TRUE(client.setMode(CameraFeature::shutter, FeatureMode::automatic));
+  next = Bottle::from_text("[fgc] [set] 0");
+  EXPECT_FALSE(client.setActive(CameraFeature::shutter, true));
+  EXPECT_FALSE(client.setMode(CameraFeature::shutter, FeatureMode::automatic));
+  ASSERT_EQ(sent.size(), 12u);
+  EXPECT_EQ(sent[0].to_text(), "[fgc] [set] [feat] 7 0.25");
+}
+
+// A camera client never asks a server that does not say it is Robogene's for its fingerprints
+// (YARP 3.12's frame grabbers log "Command not recognized"); a frame grabber has no protocol
+// request, so it is asked nothing at all.
+TEST(GrabberClient, AsksOnlyARobogeneServerForItsFingerprints) {
+  LocalNameServer ns;
+  PolyDriver camera;
+  ASSERT_TRUE(camera.open(ns.config("(device fake_grabber) (width 64) (height 48)"))) << camera.last_error();
+  GrabberServer server(*camera.device());
+  std::vector<std::string> sent;
+  GrabberClient client([&](const Bottle& request, Bottle& reply) {
+    sent.push_back(request.to_text());
+    reply = server.respond(request);
+    return true;
+  });
+  EXPECT_TRUE(client.check_server(false).empty());
+  EXPECT_TRUE(sent.empty());
+  const auto listed = client.check_server(true);
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].first, "IFrameGrabberImage");
+  EXPECT_EQ(sent, std::vector<std::string>{"[get] [rgif]"});
 }
 
 TEST(GrabberNws, OpensYarp35PortNamesAndAnswersOnTheImagePort) {

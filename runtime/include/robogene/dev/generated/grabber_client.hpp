@@ -30,11 +30,13 @@ class GrabberClient : public IFrameGrabberImage, public IFrameGrabberControls {
 
   explicit GrabberClient(Transport transport) : transport_(std::move(transport)) {}
 
-  // Checks that the server speaks the same interfaces: asks for its interfaces' fingerprints
-  // and compares them with the ones this client was generated from; a server without that
-  // request (YARP 3 answers [fail]) is checked by its protocol version instead. Throws
-  // robogene::Error naming what differs. Returns the (name, fingerprint) pairs the server has.
-  std::vector<std::pair<std::string, std::string>> check_server();
+  // Checks that the server speaks the same interfaces. A server known to be Robogene's
+  // (`robogene_server`: its port says so, robogene/dev/nws/server_identity.hpp) is asked for its
+  // interfaces' fingerprints, compared with the ones this client was generated from. Any other
+  // server is never asked (YARP 3's log every request they do not know as an error): it is
+  // checked by its protocol version where the service has one. Throws robogene::Error naming
+  // what differs. Returns the (name, fingerprint) pairs a Robogene server lists.
+  std::vector<std::pair<std::string, std::string>> check_server(bool robogene_server);
 
   bool getImage(ImageRgb& image) override;
 

@@ -25,7 +25,7 @@ namespace robogene::dev {
 class GrabberServer {
  public:
   static constexpr const char* kServiceName = "grabber";
-  static constexpr const char* kFingerprint = "a55fbefe4b8d565e";
+  static constexpr const char* kFingerprint = "6220ba2394fb6703";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {

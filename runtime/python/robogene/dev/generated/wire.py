@@ -196,7 +196,7 @@ SERVICES = {
     "controlboard": ("b78167ee398e4351", ("IEncoders", "IPositionControl", "IVelocityControl", "ITorqueControl", "IPidControl", "IControlMode", ),
 (("get", "prot", ), "prot", [1, 9, 0]),
 ("get", "rgif", )),
-    "grabber": ("a55fbefe4b8d565e", ("IFrameGrabberImage", "IFrameGrabberControls", ),
+    "grabber": ("6220ba2394fb6703", ("IFrameGrabberImage", "IFrameGrabberControls", ),
 None,
 ("get", "rgif", )),
 }
@@ -210,10 +210,16 @@ REPLY_HEADS = {
 }
 
 # service -> "stamped" (control-board replies: [ok]/[fail]) or "scoped" (YARP's frame grabbers:
-# a command's success is an empty bottle, a failure [nak])
+# a failure [nak]; a command's success an empty bottle unless COMMAND_REPLIES says otherwise)
 REPLIES = {
     "controlboard": "stamped",
     "grabber": "scoped",
+}
+
+# service -> a scoped command's reply: request items by index, "result" = int32 1 (done) or 0
+# (refused), as YARP 3.12.3's frame grabbers answer a set ([fgc] [set] 1)
+COMMAND_REPLIES = {
+    "grabber": [0, 1, "result"],
 }
 
 # service -> the server's answer to `help`, one usage line per request path
