@@ -103,6 +103,18 @@ NameReply NameService::error(const Request& r, const std::string& message) {
   return reply;
 }
 
+bool NameService::is_read_only(const Bottle& request) {
+  std::size_t at = 0;
+  if (at < request.size() && word(request[at]) == "NAME_SERVER") ++at;
+  if (at < request.size() && word(request[at]) == "bot") ++at;
+  if (at >= request.size()) return true;  // the empty request: answered with an error
+  const std::string key = word(request[at]);
+  for (const char* reader : {"help", "list", "query", "get", "check", "route", "runners"}) {
+    if (key == reader) return true;
+  }
+  return false;
+}
+
 NameReply NameService::apply(const Bottle& request, const std::string& remote_host) {
   Request r;
   r.remote_host = remote_host;
