@@ -31,6 +31,7 @@ def get(host, port, path):
 
 
 def test_browser_requests_reach_yarp_and_our_readers_alike(yarpserver, yarp, ours, net):
+    net.env["ROBOGENE_HTTP_WRITES"] = "1"  # off by default in ours (docs/security.md), always on in YARP
     readers = {"/interop/yr": yarp.read("/interop/yr"), "/interop/or": ours.read("/interop/or")}
     for name in readers:
         c = interop_net.query(net.ns_port, name)

@@ -14,6 +14,7 @@ import signal
 import socket
 import subprocess
 import time
+import urllib.error
 import urllib.request
 
 import pytest
@@ -138,7 +139,34 @@ def test_shmem_writer_killed_is_noticed_and_the_reader_goes_on(name_server, proc
     assert reader.popen.poll() is None
 
 
+def test_http_writes_are_refused_by_default(name_server, procs, robogene_bin, yarp_env, cli):
+    # A web page can make the browser send any GET or form POST to the robot: refused with 403
+    # and nothing reaches the reader, unless ROBOGENE_HTTP_WRITES=1 (docs/security.md).
+    reader = start_read(procs, robogene_bin, yarp_env, "/r")
+    host, port = address(cli, "/r")
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(f"http://{host}:{port}/data=%5Bset%5D+%5Bpos%5D+1+30", timeout=5)
+    assert refused.value.code == 403 and "Access-Control-Allow-Origin" not in refused.value.headers
+    assert "HTTP writes to this port are off" in refused.value.read().decode()
+    form = urllib.parse.urlencode({"data": "[set] [pos] 1 30.5"}).encode()
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(urllib.request.Request(f"http://{host}:{port}/form", data=form), timeout=5)
+    assert refused.value.code == 403
+    # The name server answers browsers' reads but not their writes.
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(f"http://{name_server.address}/data=unregister+%2Fr", timeout=5)
+    assert refused.value.code == 403
+    # A legitimate local writer still gets through, and /r is still registered.
+    writer = start_write(procs, robogene_bin, yarp_env, "/w")
+    ok(cli("connect", "/w", "/r"))
+    writer.send("after\n")
+    reader.wait_for_line("^after$")
+    assert not any("set" in line for line in reader.out)
+    assert "/r" in ok(cli("ls"))
+
+
 def test_http_browser_view_of_a_port(name_server, procs, robogene_bin, yarp_env, cli):
+    yarp_env["ROBOGENE_HTTP_WRITES"] = "1"  # this test is about what HTTP writes do
     reader = start_read(procs, robogene_bin, yarp_env, "/r")
     host, port = address(cli, "/r")
     conn = http.client.HTTPConnection(host, port, timeout=5)

@@ -20,6 +20,9 @@ int hex_digit(char c) {
   return -1;
 }
 
+// Seconds since the epoch (about the year 5138): beyond, microseconds overflow a long long.
+constexpr double kMaxTimestamp = 1e11;
+
 // A cursor over one line; columns are 1-based in messages.
 struct Cursor {
   const std::string& s;
@@ -69,7 +72,15 @@ LogEntry parse_log_line(const std::string& line) {
   const std::size_t ts_start = c.i;
   while (c.i < line.size() && (std::isdigit(static_cast<unsigned char>(line[c.i])) || line[c.i] == '.')) ++c.i;
   if (c.i == ts_start) c.fail("a timestamp (seconds.microseconds)");
-  e.time = std::strtod(line.substr(ts_start, c.i - ts_start).c_str(), nullptr);
+  // The whole token must be one number, small enough that its microseconds fit the writer's
+  // integer: "(70001700000000.5)" used to read, then print back as garbage (can_frame_fuzz).
+  const std::string stamp = line.substr(ts_start, c.i - ts_start);
+  char* stamp_end = nullptr;
+  e.time = std::strtod(stamp.c_str(), &stamp_end);
+  if (stamp_end != stamp.c_str() + stamp.size() || !(e.time < kMaxTimestamp)) {
+    c.i = ts_start;
+    c.fail("a timestamp (seconds.microseconds) below " + std::to_string(static_cast<long long>(kMaxTimestamp)));
+  }
   c.expect(')', "')' closing the timestamp");
   c.expect(' ', "a space before the interface name");
   const std::size_t if_start = c.i;

@@ -49,7 +49,10 @@ TEST(CandumpLog, BadLinesNameTheColumnAndWhatWasExpected) {
                         Case{"(1.0) vcan0 123#R", 17, "classic data frame"},
                         Case{"(1.0) vcan0 123#000102030405060708", 33, "at most 8"},
                         Case{"(1.0) vcan0 12345678#00", 13, "standard id"},
-                        Case{"(1.0) vcan0 923#00", 13, "7FF"}}) {
+                        Case{"(1.0) vcan0 923#00", 13, "7FF"},
+                        // Found by can_frame_fuzz: read, then written back as garbage.
+                        Case{"(70001700000000.5) can0 123#00", 2, "timestamp"},
+                        Case{"(1.2.3) can0 123#00", 2, "timestamp"}, Case{"(.) can0 123#00", 2, "timestamp"}}) {
     try {
       parse_log_line(c.line);
       FAIL() << c.line;

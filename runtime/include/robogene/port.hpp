@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "robogene/access_policy.hpp"
 #include "robogene/bottle.hpp"
 #include "robogene/carrier/message.hpp"
 #include "robogene/contact.hpp"
@@ -31,6 +32,9 @@ struct PortOptions {
   net::Millis handshake_timeout{10000};
   // Connections beyond this many open inputs are closed at once (one thread each).
   std::size_t max_inputs = 512;
+  // Who may connect, disconnect and configure this port or write to it over HTTP
+  // (docs/security.md); unset = AccessPolicy::from_environment() when the port opens.
+  std::optional<AccessPolicy> access;
 };
 
 // What a reader learns about one incoming message besides its content.

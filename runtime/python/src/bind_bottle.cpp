@@ -13,6 +13,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "py_support.hpp"
 #include "robogene/bottle.hpp"
 #include "robogene/error.hpp"
 
@@ -33,11 +34,10 @@ Value from_python(const py::handle& obj) {
     return Value::int64(v);
   }
   if (py::isinstance<py::float_>(obj)) return Value::float64(obj.cast<double>());
-  if (py::isinstance<py::str>(obj)) return Value::string(obj.cast<std::string>());
+  if (py::isinstance<py::str>(obj)) return Value::string(text_from_python(obj));
   if (py::isinstance<py::bytes>(obj) || py::isinstance<py::bytearray>(obj) ||
       py::isinstance<py::memoryview>(obj)) {
-    py::buffer_info info = py::reinterpret_borrow<py::buffer>(obj).request();
-    return Value::blob(info.ptr, static_cast<std::size_t>(info.size * info.itemsize));
+    return Value::blob(buffer_bytes(obj));
   }
   if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj)) {
     return Value::list(bottle_from_sequence(obj));
@@ -74,7 +74,7 @@ py::object to_python(const Value& v) {
     case Type::Float32:
     case Type::Float64: return py::float_(v.as_float64());
     case Type::Vocab: return py::cast(v);  // keep vocabs distinguishable from strings
-    case Type::String: return py::str(v.as_string());
+    case Type::String: return text_to_python(v.as_string());
     case Type::Blob: {
       const auto& b = v.as_blob();
       return py::bytes(reinterpret_cast<const char*>(b.data()), b.size());
@@ -103,13 +103,11 @@ void bind_bottle(py::module_& m) {
       .def_static("float64", &Value::float64)
       .def_static("vocab", [](const py::object& code) {
         if (py::isinstance<py::int_>(code)) return Value::vocab(code.cast<vocab_t>());
-        return Value::vocab(code.cast<std::string>());
+        return Value::vocab(text_from_python(code));
       }, py::arg("code"), "A vocab from up to four characters or from its integer code.")
-      .def_static("string", &Value::string)
-      .def_static("blob", [](const py::buffer& data) {
-        py::buffer_info info = data.request();
-        return Value::blob(info.ptr, static_cast<std::size_t>(info.size * info.itemsize));
-      })
+      .def_static("string", [](const py::str& s) { return Value::string(text_from_python(s)); })
+      // Any buffer, in C order: strided or reversed views are copied as seen (buffer_bytes).
+      .def_static("blob", [](const py::buffer& data) { return Value::blob(buffer_bytes(data)); })
       .def_static("list", [](const py::iterable& items) { return Value::list(bottle_from_sequence(items)); })
       .def_static("from_python", &from_python, "Convert a Python value the way Bottle.add does.")
       .def_property_readonly("type", &type_label, "Type name: int8 ... float64, vocab, string, blob, list, null.")
@@ -124,19 +122,19 @@ void bind_bottle(py::module_& m) {
       .def("as_int", &Value::as_int64)
       .def("as_float", &Value::as_float64)
       .def("as_vocab", &Value::as_vocab)
-      .def("as_vocab_text", [](const Value& v) { return vocab_to_string(v.as_vocab()); })
-      .def("as_string", [](const Value& v) { return v.as_string(); })
+      .def("as_vocab_text", [](const Value& v) { return text_to_python(vocab_to_string(v.as_vocab())); })
+      .def("as_string", [](const Value& v) { return text_to_python(v.as_string()); })
       .def("as_bytes", [](const Value& v) {
         const auto& b = v.as_blob();
         return py::bytes(reinterpret_cast<const char*>(b.data()), b.size());
       })
       .def("as_list", [](const Value& v) { return v.as_list(); })
       .def("to_python", &to_python, "The plain Python value (vocabs stay Value).")
-      .def("to_text", &Value::to_text)
+      .def("to_text", [](const Value& v) { return text_to_python(v.to_text()); })
       .def("__eq__", [](const Value& a, const Value& b) { return a == b; })
-      .def("__hash__", [](const Value& v) { return py::hash(py::str(v.to_text())); })
-      .def("__str__", &Value::to_text)
-      .def("__repr__", [](const Value& v) { return "Value(" + type_label(v) + ", " + v.to_text() + ")"; })
+      .def("__hash__", [](const Value& v) { return py::hash(text_to_python(v.to_text())); })
+      .def("__str__", [](const Value& v) { return text_to_python(v.to_text()); })
+      .def("__repr__", [](const Value& v) { return text_to_python("Value(" + type_label(v) + ", " + v.to_text() + ")"); })
       .def_buffer([](Value& v) -> py::buffer_info {
         if (!v.is_blob()) throw py::buffer_error("only a blob Value exposes a buffer, this is " + type_label(v));
         auto& b = v.as_blob();
@@ -147,14 +145,13 @@ void bind_bottle(py::module_& m) {
   bottle
       .def(py::init<>())
       .def(py::init([](const py::iterable& items) { return bottle_from_sequence(items); }), py::arg("items"))
-      .def_static("from_text", [](const std::string& text) { return Bottle::from_text(text); }, py::arg("text"))
+      .def_static("from_text", [](const py::str& text) { return Bottle::from_text(text_from_python(text)); }, py::arg("text"))
       .def_static("from_bytes", [](const py::buffer& data) {
-        py::buffer_info info = data.request();
-        return Bottle::from_bytes(static_cast<const std::uint8_t*>(info.ptr),
-                                  static_cast<std::size_t>(info.size * info.itemsize));
+        const std::vector<std::uint8_t> bytes = buffer_bytes(data);
+        return Bottle::from_bytes(bytes.data(), bytes.size());
       }, py::arg("data"))
-      .def_static("text_is_complete", [](const std::string& text) { return Bottle::text_is_complete(text); })
-      .def("to_text", &Bottle::to_text)
+      .def_static("text_is_complete", [](const py::str& text) { return Bottle::text_is_complete(text_from_python(text)); })
+      .def("to_text", [](const Bottle& b) { return text_to_python(b.to_text()); })
       .def("to_bytes", [](const Bottle& b) {
         const auto bytes = b.to_bytes();
         return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
@@ -178,14 +175,17 @@ void bind_bottle(py::module_& m) {
       })
       .def("__iter__", [](const Bottle& b) { return py::make_iterator(b.begin(), b.end()); }, py::keep_alive<0, 1>())
       .def("__eq__", [](const Bottle& a, const Bottle& b) { return a == b; })
-      .def("__str__", &Bottle::to_text)
-      .def("__repr__", [](const Bottle& b) { return "Bottle.from_text(" + std::string(py::repr(py::str(b.to_text()))) + ")"; });
+      .def("__str__", [](const Bottle& b) { return text_to_python(b.to_text()); })
+      .def("__repr__", [](const Bottle& b) {
+        // repr escapes the surrogates of non-UTF-8 bytes: the result is plain text.
+        return "Bottle.from_text(" + std::string(py::repr(text_to_python(b.to_text()))) + ")";
+      });
 
   bind_float_buffers(bottle);
 
   m.def("vocab", [](const std::string& s) { return vocab(s); }, py::arg("chars"),
         "The integer code of a vocab of up to four characters.");
-  m.def("vocab_to_string", &vocab_to_string, py::arg("code"));
+  m.def("vocab_to_string", [](vocab_t code) { return text_to_python(vocab_to_string(code)); }, py::arg("code"));
 }
 
 }  // namespace robogene::python

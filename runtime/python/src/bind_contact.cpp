@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "py_support.hpp"
 #include "robogene/contact.hpp"
 #include "robogene/envelope.hpp"
 #include "robogene/name_config.hpp"
@@ -58,16 +59,20 @@ void bind_contact(py::module_& m) {
       });
 
   py::class_<MessageInfo>(m, "MessageInfo", "What a reader learns about a message besides its Bottle.")
-      .def_readonly("sender", &MessageInfo::from, "The sending port's name ('anon_rpc' for `yarp rpc`).")
-      .def_readonly("carrier", &MessageInfo::carrier, "'tcp', 'text', 'udp', ...")
-      .def_readonly("envelope", &MessageInfo::envelope, "The envelope text ('' when none).")
+      // Names and envelopes come from the peer: any bytes, decoded without raising (text_to_python).
+      .def_property_readonly("sender", [](const MessageInfo& i) { return text_to_python(i.from); },
+                             "The sending port's name ('anon_rpc' for `yarp rpc`).")
+      .def_property_readonly("carrier", [](const MessageInfo& i) { return text_to_python(i.carrier); },
+                             "'tcp', 'text', 'udp', ...")
+      .def_property_readonly("envelope", [](const MessageInfo& i) { return text_to_python(i.envelope); },
+                             "The envelope text ('' when none).")
       .def_readonly("reply_expected", &MessageInfo::reply_expected)
       .def_property_readonly("stamp", [](const MessageInfo& i) { return Stamp::parse(i.envelope); },
                              "The envelope as a Stamp, or None when there is none or it is not one.")
       .def("__repr__", [](const MessageInfo& i) {
-        return "MessageInfo(sender=" + std::string(py::repr(py::str(i.from))) + ", carrier=" +
-               std::string(py::repr(py::str(i.carrier))) + ", envelope=" +
-               std::string(py::repr(py::str(i.envelope))) + ", reply_expected=" +
+        return "MessageInfo(sender=" + std::string(py::repr(text_to_python(i.from))) + ", carrier=" +
+               std::string(py::repr(text_to_python(i.carrier))) + ", envelope=" +
+               std::string(py::repr(text_to_python(i.envelope))) + ", reply_expected=" +
                (i.reply_expected ? "True" : "False") + ")";
       });
 

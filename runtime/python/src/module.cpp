@@ -23,13 +23,15 @@ PYBIND11_MODULE(_core, m) {
       if (p) std::rethrow_exception(p);
     } catch (const robogene::ParseError& e) {
       // The instance carries `position` (byte offset or 1-based column) beside the message.
-      py::object instance = py::reinterpret_borrow<py::object>(parse_error.ptr())(e.what());
+      // Messages quote what the peer sent: any bytes, decoded without raising (text_to_python).
+      py::object instance =
+          py::reinterpret_borrow<py::object>(parse_error.ptr())(robogene::python::text_to_python(e.what()));
       instance.attr("position") = e.position();
       PyErr_SetObject(parse_error.ptr(), instance.ptr());
     } catch (const robogene::NetworkError& e) {
-      PyErr_SetString(network_error.ptr(), e.what());
+      PyErr_SetObject(network_error.ptr(), robogene::python::text_to_python(e.what()).ptr());
     } catch (const robogene::Error& e) {
-      PyErr_SetString(error.ptr(), e.what());
+      PyErr_SetObject(error.ptr(), robogene::python::text_to_python(e.what()).ptr());
     }
   });
 

@@ -142,4 +142,30 @@ PortOptions port_options(double timeout, double connect_timeout, std::size_t max
   return o;
 }
 
+py::str text_to_python(const std::string& text) {
+  PyObject* s = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "surrogateescape");
+  if (!s) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(s);
+}
+
+std::string text_from_python(const py::handle& text) {
+  if (!PyUnicode_Check(text.ptr())) throw py::type_error("expected a str, not " + type_name_of(text));
+  PyObject* b = PyUnicode_AsEncodedString(text.ptr(), "utf-8", "surrogateescape");
+  if (!b) throw py::error_already_set();  // a surrogate that stands for no byte (e.g. '\ud800')
+  py::bytes bytes = py::reinterpret_steal<py::bytes>(b);
+  return std::string(PyBytes_AS_STRING(b), static_cast<std::size_t>(PyBytes_GET_SIZE(b)));
+}
+
+std::vector<std::uint8_t> buffer_bytes(const py::handle& buffer) {
+  Py_buffer view;
+  // Strides and suboffsets requested: the exporter describes its real layout instead of
+  // pretending to be contiguous, and PyBuffer_ToContiguous follows it.
+  if (PyObject_GetBuffer(buffer.ptr(), &view, PyBUF_FULL_RO) != 0) throw py::error_already_set();
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(view.len));
+  const int rc = out.empty() ? 0 : PyBuffer_ToContiguous(out.data(), &view, view.len, 'C');
+  PyBuffer_Release(&view);
+  if (rc != 0) throw py::error_already_set();
+  return out;
+}
+
 }  // namespace robogene::python

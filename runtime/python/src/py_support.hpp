@@ -16,12 +16,14 @@
 #include <pybind11/typing.h>
 
 #include <atomic>
+#include <cstdint>
 #include <chrono>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "robogene/bottle.hpp"
 #include "robogene/net/tcp_stream.hpp"
@@ -179,5 +181,15 @@ Bottle to_bottle(const py::handle& obj, const char* what);
 
 // PortOptions from the keyword arguments every port class takes.
 PortOptions port_options(double timeout, double connect_timeout, std::size_t max_message_size);
+
+// Text that came from the network as a Python str. Bytes that are not UTF-8 become lone
+// surrogates (the "surrogateescape" handler, as os.fsdecode does): never an exception, and
+// text_from_python gives the same bytes back.
+py::str text_to_python(const std::string& text);
+// A str as UTF-8 bytes, lone surrogates from text_to_python turned back into their bytes.
+std::string text_from_python(const py::handle& text);
+// The bytes of any buffer (bytes, bytearray, memoryview of any shape, stride or order) in C
+// order: reversed or strided views are copied item by item, never read past their ends.
+std::vector<std::uint8_t> buffer_bytes(const py::handle& buffer);
 
 }  // namespace robogene::python

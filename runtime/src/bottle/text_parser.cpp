@@ -170,10 +170,17 @@ class Parser {
 
   Value vocab_item() {
     const std::size_t open = pos_++;
-    const std::size_t first = pos_;
-    while (!at_end() && peek() != ']' && !is_separator(peek())) ++pos_;
+    std::string chars;
+    while (!at_end() && peek() != ']' && !is_separator(peek())) {
+      // Escapes as in strings ("[a\0b]"): how the writer keeps NULs and separators in a vocab.
+      if (peek() == '\\' && pos_ + 1 < s_.size()) {
+        chars += unescape(s_[pos_ + 1]);
+        pos_ += 2;
+      } else {
+        chars += s_[pos_++];
+      }
+    }
     if (at_end() || peek() != ']') fail(open, "'[' has no closing ']' (a vocab is up to four characters without spaces)");
-    const std::string_view chars(s_.data() + first, pos_ - first);
     ++pos_;
     return Value::vocab(chars);  // YARP keeps the first four characters
   }

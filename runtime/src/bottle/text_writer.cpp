@@ -48,6 +48,31 @@ void append_string(std::string& out, const std::string& s) {
   out += '"';
 }
 
+// "[set]" as YARP writes it; the bytes YARP's form would lose or misread (a NUL before the
+// last character, a separator, ']' or '\\', and the quotes and brackets that make a text
+// carrier wait for the rest of a multi-line bottle) are escaped as in strings, so the text
+// reads back as the same code.
+void append_vocab(std::string& out, vocab_t code) {
+  const auto bits = static_cast<std::uint32_t>(code);
+  int used = 4;
+  while (used > 0 && ((bits >> (8 * (used - 1))) & 0xffu) == 0) --used;  // trailing NULs: padding
+  out += '[';
+  for (int i = 0; i < used; ++i) {
+    const char c = static_cast<char>((bits >> (8 * i)) & 0xffu);
+    switch (c) {
+      case '\0': out += "\\0"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\\': case ']': case ' ': case '\t': case ',': case '"': case '(': case ')': case '{': case '}':
+        out += '\\';
+        out += c;
+        break;
+      default: out += c;
+    }
+  }
+  out += ']';
+}
+
 void append_value(std::string& out, const Value& v);
 
 void append_items(std::string& out, const Bottle& b) {
@@ -75,9 +100,7 @@ void append_value(std::string& out, const Value& v) {
       } else if (code == vocab("1")) {
         out += "true";
       } else {
-        out += '[';
-        out += vocab_to_string(code);
-        out += ']';
+        append_vocab(out, code);
       }
       break;
     }

@@ -38,8 +38,16 @@ class HttpCarrier final : public Carrier {
     // A form body is one bottle of text at most: keep it within the line limit of text carriers.
     detail::HttpRequest req = detail::read_http_request(ctx.header, *link, ctx.max_line_length);
     detail::HttpPlan plan = detail::plan_http_request(req);
+    const std::string host = link->stream.peer().host;
+    std::string refusal;
+    if (!ctx.access.http_writes()) {
+      refusal = "HTTP writes to this port are off: a web page could send them from any browser "
+                "(set ROBOGENE_HTTP_WRITES=1 to enable them for allowed peers; see docs/security.md)";
+    } else if (!ctx.access.allows(host)) {
+      refusal = refusal_text("HTTP write", host);
+    }
     return std::make_unique<detail::HttpInbound>(std::move(link), std::move(plan), ctx.local_name,
-                                                 ctx.handshake_timeout);
+                                                 ctx.handshake_timeout, refusal, ctx.harmless_data);
   }
 
   std::unique_ptr<OutboundConnection> connect(std::unique_ptr<Link>, const ConnectContext& ctx) const override {

@@ -130,7 +130,8 @@ std::string bottle_json(const Bottle& b) {
   return out;
 }
 
-HttpInbound::HttpInbound(std::unique_ptr<Link> link, HttpPlan plan, std::string port_name, net::Millis write_timeout)
+HttpInbound::HttpInbound(std::unique_ptr<Link> link, HttpPlan plan, std::string port_name, net::Millis write_timeout,
+                         const std::string& write_refusal, const std::function<bool(const Bottle&)>& harmless)
     : link_(std::move(link)), plan_(std::move(plan)), port_name_(std::move(port_name)),
       peer_(link_->stream.peer_text()) {
   link_->stream.set_write_timeout(write_timeout);
@@ -141,6 +142,23 @@ HttpInbound::HttpInbound(std::unique_ptr<Link> link, HttpPlan plan, std::string 
       steps_.push_back({plan_.admin ? 'a' : 'd', plan_.admin ? "a" : "d", plan_.lines.at(0), true});
       break;
   }
+  if (write_refusal.empty()) return;
+  bool writes = false;
+  for (const Step& s : steps_) writes = writes || is_write(s, harmless);
+  if (writes) respond("403 Forbidden", "text/plain; charset=utf-8", write_refusal + "\r\n");  // ends the request
+}
+
+bool HttpInbound::is_write(const Step& s, const std::function<bool(const Bottle&)>& harmless) {
+  // Reading the page ("*"), the help ("?") and the data stream ("r") change nothing; data and
+  // admin messages reach the port's owner, the others make or drop connections.
+  if ((s.key == 'd' || s.key == 'D') && harmless) {
+    try {
+      return !harmless(Bottle::from_text(s.data));
+    } catch (const ParseError&) {
+      return true;  // the port would refuse it anyway; not ours to judge
+    }
+  }
+  return s.key == 'd' || s.key == 'D' || s.key == 'a' || s.key == '/' || s.key == '!' || s.key == '~';
 }
 
 const std::string& HttpInbound::carrier_name() const { return kHttp; }
@@ -239,7 +257,7 @@ void HttpInbound::finish() {
 void HttpInbound::respond(const std::string& status, const std::string& type, const std::string& body) {
   std::string out = "HTTP/1.1 " + status + "\r\nContent-Type: " + type +
                     "\r\nContent-Length: " + std::to_string(body.size()) +
-                    "\r\nAccess-Control-Allow-Origin: *\r\nConnection: close\r\n\r\n" + body;
+                    "\r\nConnection: close\r\n\r\n" + body;
   link_->stream.write_all(out.data(), out.size());
   responded_ = true;
   steps_.clear();

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -18,7 +19,11 @@ namespace robogene::carrier::detail {
 
 class HttpInbound final : public InboundConnection {
  public:
-  HttpInbound(std::unique_ptr<Link> link, HttpPlan plan, std::string port_name, net::Millis write_timeout);
+  // `write_refusal`, when not empty, is why requests that write (data, admin messages,
+  // connection commands) are answered "403 Forbidden" instead of reaching the port; data for
+  // which `harmless` says true is not a write.
+  HttpInbound(std::unique_ptr<Link> link, HttpPlan plan, std::string port_name, net::Millis write_timeout,
+              const std::string& write_refusal, const std::function<bool(const Bottle&)>& harmless = {});
   const std::string& carrier_name() const override;
   const std::string& remote_name() const override;
   std::string peer_text() const override { return peer_; }
@@ -39,6 +44,7 @@ class HttpInbound final : public InboundConnection {
     std::string data;
     bool reply_expected;
   };
+  static bool is_write(const Step& s, const std::function<bool(const Bottle&)>& harmless);
   void queue_page_lines(const std::vector<std::string>& lines);
   void respond(const std::string& status, const std::string& type, const std::string& body);
   std::string page(const std::string& text) const;

@@ -24,6 +24,9 @@ using carrier::detail::McastSocket;
 
 constexpr std::size_t kPrefix = 8;     // int32 crc32(rest), int32 counter
 constexpr std::size_t kMaxDatagram = 65507;
+constexpr const char* kRefusedWhy =
+    ": the multicast fallback answers only requests that read (query, list, get...), since a "
+    "datagram's sender can be forged; send it to the name server's TCP port";
 
 void put_int32(std::uint8_t* at, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) at[i] = static_cast<std::uint8_t>(v >> (8 * i));
@@ -121,7 +124,15 @@ void FallbackResponder::run() {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.rfind("NAME_SERVER ", 0) != 0) continue;  // replies of other servers, and noise
     try {
-      NameReply reply = service_.apply(Bottle::from_text(line), from.host);
+      const Bottle request = Bottle::from_text(line);
+      // Anyone on the network can send a datagram with any source address: only requests
+      // that change nothing are served this way (register, unregister... need the TCP port).
+      if (!NameService::is_read_only(request)) {
+        log::warn("/root", "fallback: refused \"" + line + "\" from " + from.to_string() + kRefusedWhy);
+        send_text(sockets_->send, group_, std::string("*** error: refused \"") + line + "\"" + kRefusedWhy + "\r\n*** end of message\r\n");
+        continue;
+      }
+      NameReply reply = service_.apply(request, from.host);
       send_text(sockets_->send, group_, reply.to_text_wire());
     } catch (const std::exception& e) {
       log::warn("/root", "fallback: request \"" + line + "\" from " + from.to_string() + ": " + e.what());

@@ -133,6 +133,8 @@ void NameServer::serve(Session& session) {
     ctx.max_message_size = limits_.max_message;
     ctx.max_line_length = limits_.max_line;
     ctx.handshake_timeout = net::Millis{limits_.handshake_timeout_ms};
+    ctx.access = access_;
+    ctx.harmless_data = &NameService::is_read_only;
     detail::RootPortContext root{service_, stream.peer().host,
                                  "tcp://" + service_.config().host + ":" + std::to_string(service_.config().port) + "/",
                                  [this] { return peers(); }};

@@ -2,6 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "robogene/name/name_service.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+
 #include <algorithm>
 #include <chrono>
 #include <future>
@@ -50,10 +53,15 @@ Bottle bottle_of_strings(std::initializer_list<std::string> items) {
 
 // Whether a port could listen on host:port right now. Only answerable for this machine's loopback
 // or the server's own address; elsewhere every number is assumed usable.
+// Only numeric addresses are tried: a name would cost a DNS lookup per candidate number, and a
+// peer registering "127.0.0tcp" stalled the server for minutes (found by name_service_fuzz).
 bool bindable(const std::string& host, const std::string& server_host, int port) {
-  if (host.compare(0, 4, "127.") != 0 && host != "localhost" && host != server_host) return true;
+  const std::string address = host == "localhost" ? "127.0.0.1" : host;
+  in_addr a{};
+  if (inet_pton(AF_INET, address.c_str(), &a) != 1) return true;
+  if ((ntohl(a.s_addr) >> 24) != 127 && address != server_host) return true;
   try {
-    net::TcpListener::listen(net::Endpoint{host, port}, 1);
+    net::TcpListener::listen(net::Endpoint{address, port}, 1);
     return true;
   } catch (const Error&) {
     return false;  // in use by another program (or its connections): hand out another number
@@ -101,6 +109,18 @@ NameReply NameService::error(const Request& r, const std::string& message) {
     reply.lines.push_back("*** error: " + text);
   }
   return reply;
+}
+
+bool NameService::is_read_only(const Bottle& request) {
+  std::size_t at = 0;
+  if (at < request.size() && word(request[at]) == "NAME_SERVER") ++at;
+  if (at < request.size() && word(request[at]) == "bot") ++at;
+  if (at >= request.size()) return true;  // the empty request: answered with an error
+  const std::string key = word(request[at]);
+  for (const char* reader : {"help", "list", "query", "get", "check", "route", "runners"}) {
+    if (key == reader) return true;
+  }
+  return false;
 }
 
 NameReply NameService::apply(const Bottle& request, const std::string& remote_host) {

@@ -34,6 +34,7 @@ void Port::Core::start_listening(const net::Endpoint& at) {
 void Port::open_at(const std::string& name, const net::Endpoint& at) {
   if (core_->open) throw Error("port " + core_->name + " is already open");
   if (name.empty() || name[0] != '/') throw Error("port name \"" + name + "\" must start with '/'");
+  core_->access = core_->options.access ? *core_->options.access : AccessPolicy::from_environment();
   core_->name = name;
   core_->start_listening(at);
   log::info(name, "Port " + name + " active at " + core_->address.uri());
@@ -42,6 +43,7 @@ void Port::open_at(const std::string& name, const net::Endpoint& at) {
 void Port::open(const std::string& name, NameClient names) {
   if (core_->open) throw Error("port " + core_->name + " is already open");
   if (name.empty() || name[0] != '/') throw Error("port name \"" + name + "\" must start with '/'");
+  core_->access = core_->options.access ? *core_->options.access : AccessPolicy::from_environment();
   Contact reg = names.register_name(name);
   core_->name = name;
   core_->names = names;

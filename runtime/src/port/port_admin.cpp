@@ -8,6 +8,7 @@
 
 #include "port_core.hpp"
 #include "robogene/carrier/registry.hpp"
+#include "robogene/log.hpp"
 
 namespace robogene {
 
@@ -32,10 +33,33 @@ void describe_route(Bottle& out, const std::string& from, const std::string& to,
 
 Bottle fail(const std::string& why) { return Bottle{Value::vocab("fail"), Value(why)}; }
 
+// "127.0.0.1:40012" -> "127.0.0.1".
+std::string host_of(const std::string& peer_text) { return peer_text.substr(0, peer_text.rfind(':')); }
+
 }  // namespace
 
-Bottle Port::Core::admin(const Bottle& cmd) {
+bool Port::Core::is_end_of(const std::string& target, const std::string& peer_host) const {
+  std::lock_guard<std::mutex> lock(mutex);
+  for (auto& in : inputs) {
+    if (!in->done && in->from == target && in->peer_host == peer_host) return true;
+  }
+  for (auto& o : outputs) {
+    if (o->target == target && o->conn && host_of(o->conn->peer_text()) == peer_host) return true;
+  }
+  return false;
+}
+
+Bottle Port::Core::admin(const Bottle& cmd, const std::string& peer_host) {
   const std::string op = word(cmd.get(0));
+  // [add] and [prop] [set] are control; [del] also, except from the host at the other end of
+  // the connection it drops (a writer on another machine closing its udp input here).
+  const bool control = op == "add" || op == "del" || (op == "prop" && word(cmd.get(1)) == "set");
+  if (control && !access.allows(peer_host) && !(op == "del" && is_end_of(word(cmd.get(1)), peer_host))) {
+    const std::string why = refusal_text("[" + op + "]", peer_host);
+    log::warn(name, why);
+    if (op == "prop") return fail(why);
+    return Bottle{Value(-1), Value(why + "\r\n")};
+  }
   if (op == "help") {
     Bottle r;
     r.add(Value::vocab("many"));

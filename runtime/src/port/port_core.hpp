@@ -31,6 +31,7 @@ struct OutputUnit {
 struct InputUnit {
   std::string from;
   std::string carrier;
+  std::string peer_host;  // the address the connection came from, for the access policy
   carrier::InboundConnection* conn = nullptr;  // valid while the thread owns it (under Core::mutex)
   std::thread thread;
   std::atomic<int> tid{-1};  // the thread's kernel id, for [prop] [get] / [set] (sched ...)
@@ -41,6 +42,7 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
   explicit Core(PortOptions o) : options(o) {}
 
   PortOptions options;
+  AccessPolicy access;  // options.access or the environment's, fixed when the port opens
   std::string name;
   Contact address;
   std::optional<NameClient> names;
@@ -96,7 +98,10 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
   bool remove_output_report(const std::string& target, std::string& report);
   bool remove_input_report(const std::string& from, std::string& report);
   std::string describe() const;
-  Bottle admin(const Bottle& cmd);
+  // `peer_host` is where the request came from: control commands are checked against `access`.
+  Bottle admin(const Bottle& cmd, const std::string& peer_host);
+  // Whether `peer_host` is the other end of a connection to/from the port `target`.
+  bool is_end_of(const std::string& target, const std::string& peer_host) const;
   Bottle admin_prop(const Bottle& cmd);  // [prop] [get] / [prop] [set] (port_properties.cpp)
   void put_property(const std::string& key, const Value& value);  // with mutex held
   void add_unit(std::shared_ptr<OutputUnit> unit);

@@ -93,6 +93,8 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
   ctx.local_name = name;
   ctx.max_message_size = options.max_message_size;
   ctx.handshake_timeout = options.handshake_timeout;
+  ctx.access = access;
+  const std::string peer_host = stream.peer().host;
   std::string peer = stream.peer_text();
   std::unique_ptr<carrier::InboundConnection> conn;
   try {
@@ -107,6 +109,7 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
     std::lock_guard<std::mutex> lock(mutex);
     unit->from = conn->remote_name();
     unit->carrier = conn->carrier_name();
+    unit->peer_host = peer_host;
     if (closing) {
       unit->done = true;
       return;
@@ -177,7 +180,7 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
         c.finish();
         return true;
       }
-      c.reply(admin(cmd));
+      c.reply(admin(cmd, unit.peer_host));
       c.finish();
       return true;
     }
@@ -200,21 +203,20 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
     case 'q':
       c.finish();
       return false;
-    case '/': {
-      std::string report;
-      add_output_report(msg.command, report);
-      c.reply_raw(report.data(), report.size());
-      break;
-    }
-    case '!': {
-      std::string report;
-      remove_output_report(msg.command.substr(1), report);
-      c.reply_raw(report.data(), report.size());
-      break;
-    }
+    case '/':
+    case '!':
     case '~': {
       std::string report;
-      remove_input_report(msg.command.substr(1), report);
+      if (!access.allows(unit.peer_host)) {
+        report = refusal_text("\"" + msg.command + "\"", unit.peer_host) + "\r\n";
+        log::warn(name, report.substr(0, report.size() - 2));
+      } else if (msg.key == '/') {
+        add_output_report(msg.command, report);
+      } else if (msg.key == '!') {
+        remove_output_report(msg.command.substr(1), report);
+      } else {
+        remove_input_report(msg.command.substr(1), report);
+      }
       c.reply_raw(report.data(), report.size());
       break;
     }

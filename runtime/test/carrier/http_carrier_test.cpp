@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "../port/port_test_util.hpp"
+#include "../support/connect_from.hpp"
 #include "../support/wire_helpers.hpp"
 #include "robogene/carrier/registry.hpp"
 #include "robogene/error.hpp"
@@ -39,6 +40,13 @@ std::string http(const Port& p, const std::string& request) {
 std::string body_of(const std::string& response) {
   auto at = response.find("\r\n\r\n");
   return at == std::string::npos ? "" : response.substr(at + 4);
+}
+
+// HTTP writes are off by default (docs/security.md); these tests are about what they do when on.
+PortOptions http_writes_on() {
+  PortOptions o;
+  o.access = AccessPolicy().set_http_writes(true);
+  return o;
 }
 
 struct Echo {
@@ -71,7 +79,7 @@ TEST(HttpCarrier, RootPageDescribesThePort) {
 
 TEST(HttpCarrier, DataFromTheUrlOrTheFormReachesTheReaderAndItsReplyIsShown) {
   PortTable t;
-  Port p;
+  Port p(http_writes_on());
   Echo echo;
   p.set_reader(echo.reader());
   open_local(p, "/hr", t);
@@ -91,7 +99,7 @@ TEST(HttpCarrier, DataFromTheUrlOrTheFormReachesTheReaderAndItsReplyIsShown) {
 
 TEST(HttpCarrier, PathCallsAnswerAsTextOrJson) {
   PortTable t;
-  Port p;
+  Port p(http_writes_on());
   Echo echo;
   p.set_reader(echo.reader());
   open_local(p, "/hr", t);
@@ -160,4 +168,54 @@ TEST(HttpCarrier, APortCannotSendOverHttp) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("http is how a web browser reaches a port"), std::string::npos) << e.what();
   }
+}
+
+// The attack: a web page the user opens sends the browser to http://robot:port/data=... (an
+// <img>, a link, a form). Before, that moved the robot and the answer carried
+// "Access-Control-Allow-Origin: *" for any page's script to read. Now writes are refused unless
+// enabled, and no response invites other origins.
+TEST(HttpCarrier, WritesAreRefusedUnlessEnabledAndNoResponseAllowsOtherOrigins) {
+  PortTable t;
+  Port p;  // default options: HTTP writes off
+  Echo echo;
+  p.set_reader(echo.reader());
+  open_local(p, "/hr", t);
+  const std::string form = "data=%5Bset%5D+%5Bpos%5D+1+30.5";
+  for (const std::string& request :
+       {std::string("GET /data=%5Bset%5D+%5Bpos%5D+1+30.5 HTTP/1.1\r\n\r\n"), std::string("GET /set/pos/1/30.5 HTTP/1.1\r\n\r\n"),
+        std::string("GET /?req=set+pos+1+30.5 HTTP/1.1\r\n\r\n"), std::string("GET /a%0A%5Bdel%5D+%2Fx HTTP/1.1\r\n\r\n"),
+        std::string("GET /%2Fsomewhere HTTP/1.1\r\n\r\n"),
+        "POST /form HTTP/1.1\r\nContent-Type: application/x-www-form-urlencoded\r\nContent-Length: " +
+            std::to_string(form.size()) + "\r\n\r\n" + form}) {
+    std::string r = http(p, request);
+    EXPECT_EQ(r.rfind("HTTP/1.1 403 Forbidden\r\n", 0), 0u) << request << " -> " << r;
+    EXPECT_NE(body_of(r).find("HTTP writes to this port are off"), std::string::npos) << r;
+    EXPECT_EQ(r.find("Access-Control-Allow-Origin"), std::string::npos) << r;
+  }
+  // Reading still works: the page, the help, the stream.
+  std::string page = http(p, "GET / HTTP/1.1\r\n\r\n");
+  EXPECT_EQ(page.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << page;
+  EXPECT_EQ(page.find("Access-Control-Allow-Origin"), std::string::npos) << page;
+  {
+    std::lock_guard<std::mutex> lock(echo.mutex);
+    EXPECT_TRUE(echo.got.empty());
+  }
+  EXPECT_TRUE(p.output_names().empty());
+
+  // Enabled, writes from an allowed peer reach the reader; a stranger is still refused.
+  Port q([] {
+    PortOptions o;
+    o.access = AccessPolicy::parse("127.0.0.1").set_http_writes(true);
+    return o;
+  }());
+  q.set_reader(echo.reader());
+  open_local(q, "/hq", t);
+  auto s = connect_from("127.0.0.2", q.contact().endpoint());
+  send(s, std::string("GET /data=9 HTTP/1.1\r\n\r\n"));
+  std::string stranger = read_until(s, "\r\n\r\n");
+  EXPECT_EQ(stranger.rfind("HTTP/1.1 403 Forbidden\r\n", 0), 0u) << stranger;
+  std::string r = http(q, "GET /data=10 HTTP/1.1\r\n\r\n");
+  EXPECT_EQ(r.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << r;
+  std::lock_guard<std::mutex> lock(echo.mutex);
+  EXPECT_EQ(echo.got, std::vector<std::string>{"web http: 10"});
 }

@@ -11,6 +11,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include "../../src/carrier/crc32.hpp"
+#include "../../src/carrier/mcast_socket.hpp"
 #include "robogene/name/registry.hpp"
 #include "robogene/net/udp_socket.hpp"
 
@@ -60,4 +62,49 @@ TEST_F(Fallback, GarbageDatagramsAreIgnoredAndTheResponderKeepsAnswering) {
 
 TEST_F(Fallback, NoServerMeansNoAnswerWithinTheTimeout) {
   EXPECT_FALSE(name::detect_name_server("127.0.0.1", "/root", net::Millis(300), group).has_value());
+}
+
+// The attack: anyone on the network can send a datagram to the group, with any source address.
+// Before, `NAME_SERVER register` / `unregister` from one changed the registry; now only requests
+// that read are served, and the others get an error that says why.
+TEST_F(Fallback, WritesFromADatagramAreRefusedAndReadsAreStillAnswered) {
+  name::FallbackResponder responder(service, "127.0.0.1", group);
+  auto group_listener = carrier::detail::McastSocket::join(group, "127.0.0.1");
+  auto sender = net::UdpSocket::bind({"127.0.0.1", 0});
+  for (const std::string text : {"NAME_SERVER register /spoof tcp 127.0.0.1 9999\n",
+                                 "NAME_SERVER unregister /root\n", "NAME_SERVER bot set /root owner me\n"}) {
+    std::string datagram(8, '\0');
+    const std::uint32_t crc = carrier::detail::crc32(text.data(), text.size());
+    for (int i = 0; i < 4; ++i) datagram[i] = static_cast<char>(crc >> (8 * i));
+    datagram += text;
+    sender.send_to(group, datagram.data(), datagram.size());
+    std::string answer;
+    std::vector<char> buf(65536);
+    for (int i = 0; i < 20 && answer.find("refused") == std::string::npos; ++i) {
+      auto n = group_listener.receive(buf.data(), buf.size(), net::Millis(200));
+      if (n && *n > 8) answer.assign(buf.data() + 8, *n - 8);
+    }
+    EXPECT_NE(answer.find("*** error: refused \"" + text.substr(0, text.size() - 1) + "\": the multicast fallback "
+                          "answers only requests that read"),
+              std::string::npos)
+        << answer;
+  }
+  EXPECT_FALSE(db.find("/spoof").has_value());
+  EXPECT_TRUE(db.find("/root").has_value());
+  EXPECT_TRUE(db.get_property("/root", "owner").empty());
+  // The legitimate use still works.
+  auto found = name::detect_name_server("127.0.0.1", "/root", net::Millis(1500), group);
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(found->port, 10321);
+}
+
+TEST(NameServiceAccess, OnlyReadingRequestsCountAsReadOnly) {
+  for (const char* text : {"query /r", "NAME_SERVER query /r", "bot list", "NAME_SERVER bot get /r x", "help",
+                           "check /r x y", "route /a /b", "runners", ""}) {
+    EXPECT_TRUE(name::NameService::is_read_only(Bottle::from_text(text))) << text;
+  }
+  for (const char* text : {"register /r", "NAME_SERVER unregister /r", "bot set /r x y", "announce /r", "gc",
+                           "NAME_SERVER bot register /r", "nonsense"}) {
+    EXPECT_FALSE(name::NameService::is_read_only(Bottle::from_text(text))) << text;
+  }
 }

@@ -269,3 +269,12 @@ TEST(NameServiceAllocation, SkipsANumberAnotherProgramIsListeningOn) {
   EXPECT_EQ(reply.find("port " + std::to_string(busy.local().port) + " "), std::string::npos) << reply;
   EXPECT_NE(reply.find("registration name /x ip 127.0.0.1 port "), std::string::npos) << reply;
 }
+
+// Found by name_service_fuzz: a host that starts like loopback but is no address ("127.0.0tcp")
+// sent the server into one DNS lookup per candidate port number (up to 9998) before it failed.
+// Only numeric addresses are probed now; the registration takes the first number, as for any
+// host the server cannot check.
+TEST_F(NameServiceTest, AHostThatIsNoAddressIsNotLookedUpForEveryPortNumber) {
+  EXPECT_EQ(send("NAME_SERVER register /r tcp 127.0.0tcp ..."),
+            "registration name /r ip 127.0.0tcp port 10002 type tcp\r\n*** end of message\r\n");
+}

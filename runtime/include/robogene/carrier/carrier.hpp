@@ -8,10 +8,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "robogene/access_policy.hpp"
+#include "robogene/bottle.hpp"
 #include "robogene/carrier/connection.hpp"
 #include "robogene/carrier/yarp_number.hpp"
 #include "robogene/net/tcp_stream.hpp"
@@ -24,6 +27,11 @@ struct AcceptContext {
   std::size_t max_name_length = 1000;              // YARP's cap on sender names
   std::size_t max_line_length = 1u << 20;          // text carriers
   net::Millis handshake_timeout{10000};            // a silent peer cannot hold a thread for ever
+  // Who may write through carriers that check it themselves (http refuses writes itself).
+  AccessPolicy access;
+  // Data messages that change nothing (the name server's query, list...): served to browsers
+  // even with HTTP writes off. Unset: every data message counts as a write.
+  std::function<bool(const Bottle&)> harmless_data;
   // The 8 bytes that chose the carrier, set by accept_connection: for http they are the start
   // of the request ("GET /dat...").
   Header header{};

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "robogene/access_policy.hpp"
 #include "robogene/name/name_service.hpp"
 #include "robogene/net/endpoint.hpp"
 #include "robogene/net/tcp_listener.hpp"
@@ -62,6 +63,9 @@ class NameServer {
 
   NameService& service_;
   NameServerLimits limits_;
+  // HTTP writes (register... from a browser) follow $ROBOGENE_ALLOW / $ROBOGENE_HTTP_WRITES;
+  // requests that only read are served to browsers regardless.
+  AccessPolicy access_ = AccessPolicy::from_environment();
   net::TcpListener listener_;
   std::atomic<bool> stopping_{false};
   std::mutex sessions_mutex_;

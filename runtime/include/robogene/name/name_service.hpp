@@ -47,6 +47,11 @@ class NameService {
   // dropped. Called periodically by the server and by the `gc` command.
   std::vector<std::string> sweep();
 
+  // Whether `request` only reads (help, list, query, get, check, route, runners, with or without
+  // the NAME_SERVER / bot prefixes). Transports that cannot tell who sent a request (the
+  // multicast fallback, a browser's HTTP request) serve only these (docs/security.md).
+  static bool is_read_only(const Bottle& request);
+
   const NameServiceConfig& config() const noexcept { return config_; }
 
  private:
