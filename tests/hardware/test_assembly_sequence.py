@@ -6,6 +6,7 @@ replaced), a part too wide for its slot (a parameter variant), a screw its drive
 that is not a declared fit, a start that is not outside, a part left out of the sequence."""
 import copy
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -17,7 +18,7 @@ from robogene_head.assembly import Assembly
 from robogene_head.cache import Cache
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head.params import parse
-from robogene_head.parts import neck
+from robogene_head.parts import head_frame, neck
 from robogene_head.progress import Progress
 
 
@@ -77,8 +78,10 @@ def test_the_roll_stage_goes_in_before_the_front_lug(params, neck_parts):
     report = _check(params, parts, bad, {"lug": FRONT_LUG})
     assert not report.ok
     [problem] = report.problems
+    # It runs into the front lug's bearing (its rear shaft in the bearing's bore, then its body against the lug).
     assert problem.step == "step 3 'roll stage'"
-    assert "neck_roll_stage collides with" in problem.what and "along its path" in problem.what
+    assert re.match(r"neck_roll_stage (touches|collides with) (neck_roll_bearing_front|neck_pitch_front_lug) "
+                    r"[0-9.]+ mm along its path", problem.what), problem.what
 
 
 def test_a_pitch_stage_wider_than_the_uprights_gap_is_caught(params):
@@ -92,22 +95,23 @@ def test_a_pitch_stage_wider_than_the_uprights_gap_is_caught(params):
              {"name": "pitch stage", "parts": ["neck_pitch_stage"], "from": [[0, -110, 0]]}]
     report = _check(wide, chosen, steps)
     assert [p.step for p in report.problems] == ["step 3 'pitch stage'"]
-    assert "neck_pitch_stage collides with neck_upright_left" in report.problems[0].what
+    assert re.match(r"neck_pitch_stage (touches|collides with) neck_upright_left", report.problems[0].what)
 
 
-def test_a_screw_the_driver_cannot_reach_is_caught(params, neck_parts):
-    names = ["neck_roll_motor_mount", "neck_roll_gearhead", "neck_roll_motor", "neck_roll_encoder",
-             "roll_mount_screw_0", "roll_mount_screw_1"]
-    parts = [neck_parts[n] for n in names]
-    steps = [{"name": "mount", "parts": ["neck_roll_motor_mount"], "fixture": True},
-             {"name": "drive", "parts": names[1:4], "from": [[-30, 0, 0]]},
-             {"name": "screws", "fasteners": ["roll_mount_screw_*"], "driver": "hex-2-long"}]
-    assert _check(params, parts, steps).ok
-    # A 75 mm blade leaves the handle beside the motor: it cannot turn the screw.
-    del steps[2]["driver"]
-    report = _check(params, parts, steps)
-    assert report.problems and report.problems[0].step == "step 3 'screws'"
-    assert "roll_mount_screw_0 (hex-2)" in report.problems[0].what and "handle" in report.problems[0].what
+def test_a_screw_the_driver_cannot_reach_is_caught(params):
+    parts = {p.name: p for p in head_frame.build(params)}
+    drive = ["eyes_tilt_gearhead", "eyes_tilt_motor", "eyes_tilt_encoder"]
+    screws = [f"eyes_tilt_gearhead_screw_{k}" for k in range(4)]
+    chosen = [parts[n] for n in ["head_side_plate_left", *drive, *screws, "eyes_tilt_motor_pulley"]]
+    plate = {"name": "plate", "parts": ["head_side_plate_left"], "fixture": True}
+    gearhead = {"name": "drive", "parts": drive, "from": [[0, -70, 0]]}
+    fixing = {"name": "screws", "fasteners": ["eyes_tilt_gearhead_screw_*"]}
+    pulley = {"name": "pulley", "parts": ["eyes_tilt_motor_pulley"], "from": [[0, 20, 0]], "fits": ["eyes_tilt_gearhead"]}
+    assert _check(params, chosen, [plate, gearhead, fixing, pulley]).ok
+    # The motor pulley on first: its flanges cover the screws' heads, which come in from outside.
+    report = _check(params, chosen, [plate, gearhead, pulley, fixing])
+    assert report.problems and report.problems[0].step == "step 4 'screws'"
+    assert re.match(r"eyes_tilt_gearhead_screw_0 \(hex-1.5\): .* hits eyes_tilt_motor_pulley", report.problems[0].what)
 
 
 def test_a_contact_that_is_not_a_declared_fit_is_caught(params, neck_parts):
@@ -155,5 +159,6 @@ def test_the_build_stops_naming_the_step_and_the_parts(params, neck_parts, tmp_p
         fab_build._assembly_sequence(tmp_path, Cache(tmp_path / "state.json"), Progress(), params,
                                Assembly(params, parts), "key", path)
     message = str(caught.value)
-    assert "step 3 'roll stage'" in message and "neck_roll_stage collides with" in message
+    assert "step 3 'roll stage'" in message and re.search(r"neck_roll_stage (touches|collides with) neck_roll_bearing_front",
+                                                             message), message
     assert (tmp_path / "reports" / "assembly.txt").exists()
