@@ -63,7 +63,7 @@ def test_missing_catalog_part_is_named(params, assembly, tmp_path):
     del data["parts"]["skf-626-2Z"]
     path = tmp_path / "catalog.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(catalog.CatalogError, match=r"no entry for 'skf-626-2Z' \(needed by CAD part neck_pitch_bearing_left\)"):
+    with pytest.raises(catalog.CatalogError, match=r"no entry for 'skf-626-2Z' \(needed by CAD part neck_pitch_bearing_right\)"):
         collect.collect(assembly.parts, mounts.belts(params), [], catalog.load(path))
 
 

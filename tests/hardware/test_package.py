@@ -92,8 +92,8 @@ def test_freecad_reopened_every_step(fab, assembly):
 def test_freecad_check_catches_a_wrong_step(fab, tmp_path):
     """The independent check is real: a STEP whose volume differs from what CadQuery reported fails."""
     from robogene_head import freecad
-    step = fab / "step" / "neck_upright.step"
-    report = freecad.check_steps([step], {"neck_upright": 1000.0}, tmp_path / "check.json")
+    step = fab / "step" / "neck_upright_drive.step"
+    report = freecad.check_steps([step], {"neck_upright_drive": 1000.0}, tmp_path / "check.json")
     (entry,) = report["files"]
     assert not entry["ok"] and "volume" in entry["problem"]
     broken = tmp_path / "step" / "broken.step"

@@ -19,11 +19,11 @@ from pathlib import Path
 import numpy as np
 
 from . import external as external_mod
-from . import freecad, joint_config, kinematics, massprops, openscad, render, threads, urdf
+from . import freecad, joint_config, kinematics, massprops, openscad, render, render_steps, sequence, threads, urdf
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
-from .checks import interference, mesh, validity
+from .checks import assembly_sequence, interference, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
 from .harness import build as harness_build
 from .harness.pinout import PinoutError
@@ -193,6 +193,10 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
             raise BuildError("interference check failed, see " + str(inter_out[0]))
         cache.record("interference", inter_key)
 
+    # 7b. The assembly sequence: every step possible from outside (swept insertion, presses, every screw's driver),
+    # then a picture per step and the instructions page. Cached on the geometry, the sequence and the checker.
+    _assembly_sequence(out, cache, progress, params, assembly, geometry_key)
+
     # 8. FreeCAD re-opens every STEP (independent kernel check) and draws the machined parts.
     step_files = [out / "step" / f"{d['design']}.step" for d in summary if d["kind"] != "board"] + [asm_out[0]]
     expected = {d["design"]: d["volume_mm3"] for d in summary if d["kind"] != "board"}
@@ -244,6 +248,42 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     manifest = write_manifest(out, params_text, external.board)
     progress.note(f"done: {len(manifest['files'])} files in {out}")
     return manifest
+
+
+def _source_hash(module) -> str:
+    return hashlib.sha256(Path(module.__file__).read_bytes()).hexdigest()
+
+
+def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, assembly, geometry_key: str,
+                       sequence_path: Path | None = None) -> None:
+    """Check the assembly sequence (BuildError naming the step and the parts on failure), then draw its steps."""
+    try:
+        seq = sequence.load([p.name for p in assembly.parts], sequence_path)
+    except sequence.SequenceError as exc:
+        raise BuildError(str(exc)) from None
+    reports = [out / "reports" / "assembly.txt", out / "reports" / "assembly.json"]
+    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(sequence))
+    if not cache.fresh("assembly-sequence", key, reports):
+        report = assembly_sequence.check(params, assembly, seq,
+                                         progress=lambda i, n, label: progress.step("assembly", i, n, label))
+        _write(reports[0], assembly_sequence.format_report(report) + "\n")
+        _write(reports[1], json.dumps(assembly_sequence.report_json(report), indent=1))
+        progress.note(f"assembly sequence checked in {report.seconds:.0f} s ({report.cpu_seconds:.0f} s of CPU)")
+        if not report.ok:
+            raise BuildError("assembly sequence check failed (" + str(seq.path.name) + "):\n  "
+                             + "\n  ".join(str(p) for p in report.problems) + f"\nsee {reports[0]}")
+        cache.record("assembly-sequence", key)
+    folder = out / "assembly" / "steps"
+    steps = seq.steps()
+    pictures = [folder / render_steps.file_name(i + 1, s) for i, s in enumerate(steps)]
+    page = folder / "README.md"
+    picture_key = digest(key, _source_hash(render_steps))
+    if not cache.fresh("assembly-steps", picture_key, pictures + [page]):
+        render_steps.render_all(assembly, seq, folder,
+                                progress=lambda i, n, label: progress.step("steps", i, n, label))
+        _write(page, render_steps.instructions(seq, json.loads(reports[1].read_text())))
+        cache.record("assembly-steps", picture_key)
+    _remove_stale(folder, {p.name for p in pictures} | {page.name}, progress)
 
 
 def _draw_machined(out: Path, cache: Cache, progress: Progress, jobs: list) -> None:

@@ -23,6 +23,7 @@ PURCHASED_KINDS = {
     "encoder": ("lines", "diameter", "length", "mass"),
     "joint_encoder": ("bits", "length", "width", "height", "mass"),
     "bearing": ("bore", "outside", "width", "mass"),
+    "retaining_ring": ("bore", "groove_diameter", "groove_width", "thickness", "inner_diameter", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),

@@ -11,7 +11,8 @@ from .base import ALUMINIUM, PRINTED, Part, loc
 
 def eye_cup(params: HeadParameters):
     """Printed eye cup about the eye centre: a sphere cut flat in front, with a pocket that holds the
-    camera board, a lens window, a slot for the camera's flat cable and the pan shaft bore below."""
+    camera board, a lens window and the pan shaft bore below. The pocket is open to the back: the board slides
+    in from behind against the pocket's front wall, its lens through the window, its flat cable out the back."""
     e = params.geometry("eyes")
     r, front = e.num("cup_radius", positive=True), e.num("cup_front_cut", positive=True)
     cam = params.purchased(params.root.node("cameras").text("model"))
@@ -22,9 +23,8 @@ def eye_cup(params: HeadParameters):
     cup = geom.cut(geom.sphere(r, poles="x"), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1),
                    geom.box(-r - 1, -back, -r - 1, r + 1, -r - 1, r + 1))
     cup = geom.cut(cup,
-                   geom.box(-t, 0, -w / 2, w / 2, -h / 2, h / 2),                  # board pocket
+                   geom.box(-r - 1, 0, -w / 2, w / 2, -h / 2, h / 2),              # board pocket, open behind
                    geom.cyl("x", cam.num("lens_diameter"), -0.5, front + 1),       # lens window
-                   geom.box(-r - 1, -t, -8, 8, -h / 2, -h / 2 + 2),               # flat-cable slot
                    geom.cyl("z", shaft, -r - 1, -r + 3))                           # pan shaft bore
     corner = ((w / 2) ** 2 + (h / 2) ** 2 + t ** 2) ** 0.5
     if corner > r - 1:

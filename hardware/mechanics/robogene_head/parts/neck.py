@@ -10,9 +10,56 @@ from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
 STANDOFF = "standoff-M3x46-FF"
-UPRIGHT_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer face "
-                "for the pitch motor mount (unused on the right upright)")
-PITCH_STAGE_NOTE = "Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount"
+UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
+                      "face for the pitch motor mount")
+UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: 626 "
+                        "outer ring against the shoulder, DIN 472 groove outside it")
+PITCH_STAGE_NOTE = ("Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount; cross bar: "
+                    "2 x 3.4 through at the front for the front lug's screws")
+FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: 626 outer ring "
+                  "against the shoulder, DIN 472 groove outside it")
+
+
+def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
+                  at: tuple[float, float]) -> tuple[list, float, float]:
+    """Bore of a floating bearing through a wall from `inner` to `outer` (coordinates along `axis`, either order):
+    a shoulder next to the inside, the bearing's seat, the retaining ring's groove and a land outside it
+    (geometry.bearing_seats). Returns the cutting tools and where the bearing and the ring start (their inner
+    faces) along the axis."""
+    seats = params.geometry("bearing_seats")
+    bearing = params.purchased(params.drive(joint).text("bearing"))
+    ring = params.purchased(seats.text("bearing_ring"))
+    bw, bo = bearing.num("width"), bearing.num("outside")
+    if abs(ring.num("bore") - bo) > 1e-9:
+        raise ParameterError(f"{params.path}: geometry.bearing_seats.bearing_ring: {seats.text('bearing_ring')} is for a "
+                             f"{ring.num('bore'):g} mm bore, the {joint} bearing is {bo:g} outside")
+    sign = 1.0 if outer > inner else -1.0
+    wall = abs(outer - inner)
+    land, m = seats.num("land", positive=True), ring.num("groove_width", positive=True)
+    shoulder = wall - bw - m - land
+    if shoulder < 1.0:
+        raise ParameterError(f"{params.path}: the wall holding the {joint} bearing is {wall:g} thick: it needs "
+                             f"{bw + m + land + 1:g} for the bearing, the ring's groove, the land and a 1 mm shoulder")
+    hole = seats.num("shoulder_hole", positive=True)
+    if hole >= bo:
+        raise ParameterError(f"{params.path}: geometry.bearing_seats.shoulder_hole: {hole:g} leaves no shoulder for a "
+                             f"{bo:g} mm bearing")
+    b0 = inner + sign * shoulder
+    g0 = b0 + sign * bw
+    tools = [geom.cyl(axis, hole, inner - sign, b0 + sign * 0.5, at),
+             geom.cyl(axis, bo, b0, outer + sign, at),
+             geom.cyl(axis, ring.num("groove_diameter"), g0, g0 + sign * m, at)]
+    return tools, b0, g0
+
+
+def bearing_ring(params: HeadParameters) -> str:
+    return params.geometry("bearing_seats").text("bearing_ring")
+
+
+def shaft_hole(params: HeadParameters, joint: str) -> float:
+    """A shaft through a wall that carries no bearing (the drive side): its diameter plus the clearance."""
+    bore = params.purchased(params.drive(joint).text("bearing")).num("bore", positive=True)
+    return bore + 2 * params.geometry("bearing_seats").num("shaft_clearance", positive=True)
 
 
 def _base(params: HeadParameters) -> list[Part]:
@@ -50,27 +97,31 @@ def _base(params: HeadParameters) -> list[Part]:
     z_flange = -T - bay - ft
 
     bearing = params.purchased(params.drive("neck_pitch").text("bearing"))
-    bw, bo = bearing.num("width"), bearing.num("outside")
+    bo = bearing.num("outside")
     height = hp + bo / 2 + 5
-    # Left upright in its design frame; the right one is the same part turned half a turn about z.
+    # Both uprights in their design frame at +y. The left one carries the drive: the pitch shaft passes through it
+    # to the gearhead, whose bearings locate it. The right one, turned half a turn about z, holds the floating 626.
     y_face = gap / 2 + ut
-    upright = geom.cut(geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height),
-                       geom.cyl("y", 8, gap / 2 - 1, y_face + 1, (0, hp)),
-                       geom.cyl("y", bo, y_face - bw, y_face + 1, (0, hp)),
-                       *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)],
-                       *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
-                         for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
-    upright = geom.single_solid(upright, "neck_upright")
+    block = geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height)
+    bottom_holes = [geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)]
+    upright_drive = geom.cut(block, geom.cyl("y", shaft_hole(params, "neck_pitch"), gap / 2 - 1, y_face + 1, (0, hp)),
+                             *bottom_holes,
+                             *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
+                               for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
+    seat, b0, g0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
+    upright_bearing = geom.cut(block, *seat, *bottom_holes)
 
     parts = [
         Part("neck_base_plate", "neck_base_plate", "neck_base", "machined", geom.single_solid(plate, "plate"),
              material="aluminium-6082", color=ALUMINIUM),
         Part("neck_base_flange", "neck_base_flange", "neck_base", "machined", geom.single_solid(flange, "flange"),
              loc(z=z_flange), material="aluminium-6082", color=ALUMINIUM, note=board_stack.FLANGE_NOTE),
-        Part("neck_upright_left", "neck_upright", "neck_base", "machined", upright, material="aluminium-6082", color=ALUMINIUM,
-             note=UPRIGHT_NOTE),
-        Part("neck_upright_right", "neck_upright", "neck_base", "machined", upright, loc(rz=180),
-             material="aluminium-6082", color=ALUMINIUM, note=UPRIGHT_NOTE),
+        Part("neck_upright_left", "neck_upright_drive", "neck_base", "machined",
+             geom.single_solid(upright_drive, "neck_upright_drive"), material="aluminium-6082", color=ALUMINIUM,
+             note=UPRIGHT_DRIVE_NOTE),
+        Part("neck_upright_right", "neck_upright_bearing", "neck_base", "machined",
+             geom.single_solid(upright_bearing, "neck_upright_bearing"), loc(rz=180),
+             material="aluminium-6082", color=ALUMINIUM, note=UPRIGHT_BEARING_NOTE),
     ]
     for i, (x, y) in enumerate(corners):
         parts.append(purchased.standoff(params, f"base_standoff_{i}", STANDOFF, "neck_base", loc(x, y, -T - bay)))
@@ -78,12 +129,13 @@ def _base(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"base_flange_screw_{i}", SCREW, "neck_base", loc(x, y, z_flange)))
     for i, (x, y) in enumerate(upright_screws):
         parts.append(purchased.screw(params, f"upright_screw_{i}", SCREW, "neck_base", loc(x, y, -T)))
-    # Pitch bearings sit in the uprights' outer recesses; the drive is bolted on the left upright.
+    # The floating pitch bearing and its ring in the right upright (design +y, turned to -y); the drive is bolted on
+    # the left upright.
     y_out = gap / 2 + ut
-    parts.append(purchased.bearing(params, "neck_pitch_bearing_left", params.drive("neck_pitch").text("bearing"), "neck_base",
-                                   loc(0, y_out - bw, hp, rx=-90)))
-    parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"), "neck_base",
-                                   loc(0, -y_out + bw, hp, rx=90)))
+    parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"),
+                                   "neck_base", loc(0, -b0, hp, rx=90)))
+    parts.append(purchased.retaining_ring(params, "neck_pitch_bearing_ring", bearing_ring(params), "neck_base",
+                                          loc(0, -g0, hp, rx=90)))
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
     pt = mounts.mount_thickness(params, "neck_pitch")
     mount = mounts.mount_plate(params, "neck_pitch", mounts.mount_outline(params, "neck_pitch"), gear.num("diameter"))
@@ -99,8 +151,16 @@ def _base(params: HeadParameters) -> list[Part]:
     return parts
 
 
+def front_lug_x(params: HeadParameters) -> tuple[float, float]:
+    """The front lug's inner and outer faces along x, pitch-link frame."""
+    g = params.geometry("neck_pitch_stage")
+    span = g.node("lug").num("span", positive=True)
+    return span / 2, span / 2 + g.node("front_lug").num("thickness", positive=True)
+
+
 def _pitch_stage(params: HeadParameters) -> list[Part]:
-    """Pitch stage in the neck_pitch_link frame (origin on the pitch axis)."""
+    """Pitch stage in the neck_pitch_link frame (origin on the pitch axis): a one-piece stage with the rear lug, and
+    the front lug bolted on its cross bar after the roll stage is in."""
     g = params.geometry("neck_pitch_stage")
     b, lug = g.node("body"), g.node("lug")
     bl, bw, bh = b.num("length", positive=True), b.num("width", positive=True), b.num("height", positive=True)
@@ -109,29 +169,43 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     y_out = up.num("gap") / 2 + up.num("thickness")
     zr = params.joints["neck_roll"].origin[2]
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
-    bearing = params.purchased(params.drive("neck_roll").text("bearing"))
     pitch_bore = params.purchased(params.drive("neck_pitch").text("bearing")).num("bore", positive=True)
     pitch_plate = mounts.mount_thickness(params, "neck_pitch")   # the gearhead's flange, so its shaft's reach
     roll_fixings = mounts.mount_fixings(params, "neck_roll")
     x_out = span / 2 + lt
+    fx0, fx1 = front_lug_x(params)
+    bar = bh / 2 - 4
+    lug_screw = params.purchased(SCREW)
+    lug_screws = [((fx0 + fx1) / 2, sy * g.node("front_lug").num("screw_dy", positive=True)) for sy in (1, -1)]
+    if lug_screw.num("length") - 4 < 6 or any(abs(y) + lug_screw.num("head_diameter") / 2 > lw / 2 for _, y in lug_screws):
+        raise ParameterError(f"{params.path}: geometry.neck_pitch_stage.front_lug.screw_dy: the front lug's {SCREW} "
+                             f"do not fit its {lw:g} mm width")
     stage = geom.union(
         geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
-        geom.box(-x_out, x_out, -lw / 2, lw / 2, bh / 2 - 4, bh / 2),
-        geom.box(span / 2, x_out, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
-        geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bh / 2 - 4, zr + lw / 2),
+        geom.box(-x_out, fx1, -lw / 2, lw / 2, bar, bh / 2),                     # cross bar under both lugs
+        geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bar, zr + lw / 2),        # rear lug
         geom.cyl("y", pitch_bore, bw / 2 - 1, y_out),          # pitch shafts, integral with the stage
         geom.cyl("y", pitch_bore, -y_out, -bw / 2 + 1),
     )
+    # The rear lug carries no bearing: the roll gearhead's own bearings are the roll shaft's fixed bearing.
     stage = geom.cut(stage,
                      geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + pitch_plate, y_out + 1),
-                     geom.cyl("x", bearing.num("outside"), span / 2 - 1, x_out + 1, (0, zr)),
-                     geom.cyl("x", bearing.num("outside"), -x_out - 1, -span / 2 + 1, (0, zr)),
-                     *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings])
+                     geom.cyl("x", shaft_hole(params, "neck_roll"), -x_out - 1, -span / 2 + 1, (0, zr)),
+                     *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
+                     *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws])
+    seat, b0, g0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
+    front = geom.cut(geom.box(fx0, fx1, -lw / 2, lw / 2, bh / 2, zr + lw / 2), *seat,
+                     *[geom.cyl("z", 3.0, bh / 2 - 1, bh / 2 + lug_screw.num("length") - 4, c) for c in lug_screws])
     parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
-                  material="aluminium-6082", color=ALUMINIUM, note=PITCH_STAGE_NOTE)]
+                  material="aluminium-6082", color=ALUMINIUM, note=PITCH_STAGE_NOTE),
+             Part("neck_pitch_front_lug", "neck_pitch_front_lug", "neck_pitch_link", "machined",
+                  geom.single_solid(front, "front lug"), material="aluminium-6082", color=ALUMINIUM, note=FRONT_LUG_NOTE)]
+    for i, (x, y) in enumerate(lug_screws):   # heads under the cross bar, 4 mm of it, the rest into the lug
+        parts.append(purchased.screw(params, f"front_lug_screw_{i}", SCREW, "neck_pitch_link", loc(x, y, bar)))
     key = params.drive("neck_roll").text("bearing")
-    parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(span / 2, 0, zr, ry=90)))
-    parts.append(purchased.bearing(params, "neck_roll_bearing_rear", key, "neck_pitch_link", loc(-span / 2, 0, zr, ry=-90)))
+    parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(b0, 0, zr, ry=90)))
+    parts.append(purchased.retaining_ring(params, "neck_roll_bearing_ring", bearing_ring(params), "neck_pitch_link",
+                                          loc(g0, 0, zr, ry=90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     rd = roll_gear.num("diameter")
     rt = mounts.mount_thickness(params, "neck_roll")
@@ -148,7 +222,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"roll_mount_screw_{i}", mounts.FIXING_SCREW, "neck_pitch_link",
                                      loc(-x_out - rt, fy, zr + fx, ry=90)))
     parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - rt, 0, zr, ry=-90))
-    parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(x_out + 1, 0, zr, ry=90)))
+    parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(fx1 + 1, 0, zr, ry=90)))
     return parts
 
 
@@ -158,13 +232,14 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     bl, bw, bh = b.num("length", positive=True), b.num("width", positive=True), b.num("height", positive=True)
     lug = params.geometry("neck_pitch_stage", "lug")
     x_out = lug.num("span") / 2 + lug.num("thickness")
+    x_front = front_lug_x(params)[1]
     zy = params.joints["neck_yaw"].origin[2]
     gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
     shaft = yaw_bearing.num("bore")
     roll_bore = params.purchased(params.drive("neck_roll").text("bearing")).num("bore", positive=True)
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
-                       geom.cyl("x", roll_bore, bl / 2 - 1, x_out), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
+                       geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
     roll_plate = mounts.mount_thickness(params, "neck_roll")   # the gearhead's flange, so its shaft's reach
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,

@@ -60,6 +60,13 @@ def bearing(params: HeadParameters, name: str, key: str, link: str, placement: c
     return _purchased(params, name, key, link, shape, placement, STEEL)
 
 
+def retaining_ring(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Ring z 0..thickness, its outside the groove diameter it springs into."""
+    r = params.purchased(key)
+    shape = geom.tube("z", r.num("groove_diameter"), r.num("inner_diameter"), 0, r.num("thickness"))
+    return _purchased(params, name, key, link, shape, placement, DARK)
+
+
 def joint_encoder(params: HeadParameters, name: str, link: str, placement: cq.Location, key="ams-AS5048A") -> Part:
     """Sensor board, centred on its axis, z 0..height (the magnet faces z = 0)."""
     e = params.purchased(key)

@@ -1,0 +1,164 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The assembly sequence: the package's check passed and drew every step; the checker fails, naming the step
+and the parts, on variants that cannot be built: a part that cannot be inserted (the design this sequence
+replaced), a part too wide for its slot (a parameter variant), a screw its driver cannot reach, a contact
+that is not a declared fit, a start that is not outside, a part left out of the sequence."""
+import copy
+import json
+import re
+from pathlib import Path
+
+import pytest
+import yaml
+
+from robogene_head import fab as fab_build
+from robogene_head import sequence
+from robogene_head.assembly import Assembly
+from robogene_head.cache import Cache
+from robogene_head.checks import assembly_sequence as chk
+from robogene_head.params import parse
+from robogene_head.parts import head_frame, neck
+from robogene_head.progress import Progress
+
+
+def test_package_check_passed_and_drew_every_step(fab, params):
+    report = json.loads((fab / "reports" / "assembly.json").read_text())
+    assert report["ok"] and report["problems"] == []
+    parts = json.loads((fab / "parts.json").read_text())
+    names = [n for d in parts for n in d["instances"]]
+    seq = sequence.load(names)
+    assert [s["step"] for s in report["steps"]] == [s.label for s in seq.steps()]
+    # every screw was reached by its driver, every pressed bearing by its arbor, every circlip by its pliers
+    tools = [t["tool"] for s in report["steps"] for t in s["tools"]]
+    steps = seq.steps()
+    assert len(tools) == sum(len(s.fasteners) + s.press + bool(s.access) for s in steps)
+    assert {f"{f} (" for s in steps for f in s.fasteners} <= {t.split("(")[0] + "(" for t in tools}
+    swept = [s for s in report["steps"] if not s["note"]]
+    assert swept and all(s["samples"] > 1 for s in swept)
+    folder = fab / "assembly" / "steps"
+    pictures = sorted(folder.glob("*.png"))
+    assert len(pictures) == len(seq.steps())
+    assert all(p.stat().st_size > 10_000 for p in pictures)
+    page = (folder / "README.md").read_text()
+    assert all(p.name in page for p in pictures)
+
+
+@pytest.fixture(scope="module")
+def neck_parts(params):
+    return {p.name: p for p in neck.build(params)}
+
+
+def _check(params, parts, steps, subassemblies=None):
+    names = [p.name for p in parts]
+    data = {"drivers": {"hex-2": {"blade": 2.4, "length": 75, "handle": 25},
+                        "hex-2-long": {"blade": 2.4, "length": 150, "handle": 25},
+                        "hex-1.5": {"blade": 1.8, "length": 60, "handle": 20}},
+            "screw_drivers": {"iso7380-M3": "hex-2", "iso4762-M2": "hex-1.5"},
+            "subassemblies": subassemblies or {}, "sequence": steps}
+    seq = sequence.parse(data, Path("variant.yaml"), names)
+    return chk.check(params, Assembly(params, parts), seq)
+
+
+FRONT_LUG = [{"name": "front lug", "parts": ["neck_pitch_front_lug"], "fixture": True},
+             {"name": "roll bearing", "parts": ["neck_roll_bearing_front"], "from": [[20, 0, 0]],
+              "fits": ["neck_pitch_front_lug"], "press": True}]
+
+
+def test_the_roll_stage_goes_in_before_the_front_lug(params, neck_parts):
+    parts = [neck_parts[n] for n in ("neck_pitch_stage", "neck_roll_stage", "neck_pitch_front_lug",
+                                     "neck_roll_bearing_front")]
+    good = [{"name": "stage", "parts": ["neck_pitch_stage"], "fixture": True},
+            {"name": "roll stage", "parts": ["neck_roll_stage"], "from": [[60, 0, 0]]},
+            {"name": "lug", "subassembly": "lug", "from": [[30, 0, 0]], "fits": ["neck_roll_stage", "neck_pitch_stage"]}]
+    report = _check(params, parts, good, {"lug": FRONT_LUG})
+    assert report.ok, chk.format_report(report)
+    # The old order: the lug on first, then the roll stage with its integral shafts cannot get between the lugs.
+    bad = [good[0], good[2], good[1]]
+    report = _check(params, parts, bad, {"lug": FRONT_LUG})
+    assert not report.ok
+    [problem] = report.problems
+    # It runs into the front lug's bearing (its rear shaft in the bearing's bore, then its body against the lug).
+    assert problem.step == "step 3 'roll stage'"
+    assert re.match(r"neck_roll_stage (touches|collides with) (neck_roll_bearing_front|neck_pitch_front_lug) "
+                    r"[0-9.]+ mm along its path", problem.what), problem.what
+
+
+def test_a_pitch_stage_wider_than_the_uprights_gap_is_caught(params):
+    data = copy.deepcopy(params.root._data)
+    data["geometry"]["neck_pitch_stage"]["body"]["width"] = 66     # the uprights stand 64 apart
+    wide = parse(data, "variant", params.path)
+    parts = {p.name: p for p in neck.build(wide)}
+    chosen = [parts[n] for n in ("neck_base_plate", "neck_upright_left", "neck_pitch_stage")]
+    steps = [{"name": "plate", "parts": ["neck_base_plate"], "fixture": True},
+             {"name": "left upright", "parts": ["neck_upright_left"], "from": [[0, 0, 30]]},
+             {"name": "pitch stage", "parts": ["neck_pitch_stage"], "from": [[0, -110, 0]]}]
+    report = _check(wide, chosen, steps)
+    assert [p.step for p in report.problems] == ["step 3 'pitch stage'"]
+    assert re.match(r"neck_pitch_stage (touches|collides with) neck_upright_left", report.problems[0].what)
+
+
+def test_a_screw_the_driver_cannot_reach_is_caught(params):
+    parts = {p.name: p for p in head_frame.build(params)}
+    drive = ["eyes_tilt_gearhead", "eyes_tilt_motor", "eyes_tilt_encoder"]
+    screws = [f"eyes_tilt_gearhead_screw_{k}" for k in range(4)]
+    chosen = [parts[n] for n in ["head_side_plate_left", *drive, *screws, "eyes_tilt_motor_pulley"]]
+    plate = {"name": "plate", "parts": ["head_side_plate_left"], "fixture": True}
+    gearhead = {"name": "drive", "parts": drive, "from": [[0, -70, 0]]}
+    fixing = {"name": "screws", "fasteners": ["eyes_tilt_gearhead_screw_*"]}
+    pulley = {"name": "pulley", "parts": ["eyes_tilt_motor_pulley"], "from": [[0, 20, 0]], "fits": ["eyes_tilt_gearhead"]}
+    assert _check(params, chosen, [plate, gearhead, fixing, pulley]).ok
+    # The motor pulley on first: its flanges cover the screws' heads, which come in from outside.
+    report = _check(params, chosen, [plate, gearhead, pulley, fixing])
+    assert report.problems and report.problems[0].step == "step 4 'screws'"
+    assert re.match(r"eyes_tilt_gearhead_screw_0 \(hex-1.5\): .* hits eyes_tilt_motor_pulley", report.problems[0].what)
+
+
+def test_a_contact_that_is_not_a_declared_fit_is_caught(params, neck_parts):
+    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(FRONT_LUG)
+    del steps[1]["fits"]     # the bearing slides in its bore
+    report = _check(params, parts, steps)
+    assert len(report.problems) == 1
+    assert "neck_roll_bearing_front touches neck_pitch_front_lug" in report.problems[0].what
+
+
+def test_a_start_inside_the_assembly_is_caught(params, neck_parts):
+    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(FRONT_LUG)
+    steps[1]["from"] = [[2, 0, 0]]
+    report = _check(params, parts, steps)
+    assert "is not outside" in report.problems[0].what
+
+
+def test_a_bearing_pressed_across_its_axis_is_caught(params, neck_parts):
+    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(FRONT_LUG)
+    steps[1]["from"] = [[0, 0, 40]]
+    report = _check(params, parts, steps)
+    assert any("not pressed along its axis" in p.what or "collides" in p.what for p in report.problems)
+
+
+def test_every_part_must_be_in_the_sequence(params, neck_parts):
+    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front", "neck_roll_bearing_ring")]
+    with pytest.raises(sequence.SequenceError, match="neck_roll_bearing_ring"):
+        _check(params, parts, FRONT_LUG)
+
+
+def test_the_build_stops_naming_the_step_and_the_parts(params, neck_parts, tmp_path):
+    parts = [neck_parts[n] for n in ("neck_pitch_stage", "neck_roll_stage", "neck_pitch_front_lug",
+                                     "neck_roll_bearing_front")]
+    broken = {"drivers": {"hex-2": {"blade": 2.4, "length": 75, "handle": 25}},
+              "screw_drivers": {"iso7380-M3": "hex-2"}, "subassemblies": {"lug": FRONT_LUG},
+              "sequence": [{"name": "stage", "parts": ["neck_pitch_stage"], "fixture": True},
+                           {"name": "lug", "subassembly": "lug", "from": [[30, 0, 0]], "fits": ["neck_pitch_stage"]},
+                           {"name": "roll stage", "parts": ["neck_roll_stage"], "from": [[60, 0, 0]]}]}
+    path = tmp_path / "broken.yaml"
+    path.write_text(yaml.safe_dump(broken))
+    with pytest.raises(fab_build.BuildError) as caught:
+        fab_build._assembly_sequence(tmp_path, Cache(tmp_path / "state.json"), Progress(), params,
+                               Assembly(params, parts), "key", path)
+    message = str(caught.value)
+    assert "step 3 'roll stage'" in message and re.search(r"neck_roll_stage (touches|collides with) neck_roll_bearing_front",
+                                                             message), message
+    assert (tmp_path / "reports" / "assembly.txt").exists()
