@@ -37,6 +37,7 @@ struct InputUnit {
   std::atomic<int> tid{-1};  // the thread's kernel id, for [prop] [get] / [set] (sched ...)
   bool done = false;
   bool connectionless = false;  // udp / mcast: counted against max_datagram_inputs
+  bool evicted = false;         // told to leave to make room (its thread is winding down)
   // When the connection last delivered a message (steady clock), to evict the longest-silent
   // datagram input first.
   std::atomic<std::int64_t> last_heard{0};

@@ -174,7 +174,7 @@ void Port::Core::evict_silent_datagram_input(const InputUnit& unit) {
   std::size_t held = 0;
   InputUnit* silent = nullptr;
   for (auto& other : inputs) {
-    if (other.get() == &unit || other->done || !other->conn || !other->connectionless) continue;
+    if (other.get() == &unit || other->done || other->evicted || !other->conn || !other->connectionless) continue;
     ++held;
     if (!silent || other->last_heard < silent->last_heard) silent = other.get();
   }
@@ -182,6 +182,7 @@ void Port::Core::evict_silent_datagram_input(const InputUnit& unit) {
   log::warn(name, "dropping the " + silent->carrier + " input from " + silent->from +
                       " (silent longest) to make room: already " + std::to_string(held) +
                       " datagram inputs (ROBOGENE_MAX_DATAGRAM_INPUTS)");
+  silent->evicted = true;
   silent->conn->interrupt();
 }
 
