@@ -21,6 +21,10 @@
 
 namespace robogene::test {
 
+// The process-wide handshake-deadline timer: one thread, started by the first handshake and
+// kept, so a test that measures before the first handshake sees it appear.
+constexpr std::size_t kDeadlineTimerThread = 1;
+
 // Limits changed for the length of one test.
 class ScopedLimits {
  public:
