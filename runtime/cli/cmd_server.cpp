@@ -38,6 +38,13 @@ int cmd_server(Args& args) {
     limits.max_message = parse_bytes(*m, "--max-message");
     limits.max_line = std::min(limits.max_line, limits.max_message);
   }
+  if (auto c = args.option("--max-connections")) {
+    limits.max_connections = static_cast<std::size_t>(parse_number(*c, "--max-connections", 1, 100000));
+  }
+  if (auto t = args.option("--idle-timeout")) {
+    // Capped at 24 days, what an int of milliseconds holds.
+    limits.idle_timeout_ms = static_cast<int>(std::min(parse_seconds(*t, "--idle-timeout"), 2000000.0) * 1000);
+  }
   if (!args.positional().empty()) throw UsageError("unexpected argument \"" + args.positional()[0] + "\"");
 
   if (db_path != ":memory:") {

@@ -23,7 +23,7 @@ struct Command {
 };
 
 const Command kCommands[] = {
-    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S] [--max-message BYTES] [--no-fallback]",
+    {"server", "robogene server [--ip HOST] [--socket PORT] [--db FILE] [--read] [--stale-grace S] [--recheck S] [--sweep S] [--max-message BYTES] [--max-connections N] [--idle-timeout S] [--no-fallback]",
      "run the name server /root (default 127.0.0.1:10000); registrations persist in FILE", robogene::cli::cmd_server},
     {"detect", "robogene detect [--write] [--ip IFACE] [--timeout S]",
      "find the name server over multicast, without yarp.conf (as yarp detect); --write saves it",

@@ -20,6 +20,9 @@ namespace robogene {
 struct DecodeLimits {
   std::size_t max_depth = 64;                  // nested lists
   std::size_t max_bytes = 512u * 1024u * 1024u;  // whole encoded bottle
+  // Items of all lists together: one byte on the wire (an int8 in a typed list) becomes a
+  // 16-byte Value, so the bytes alone do not bound what decoding allocates.
+  std::size_t max_values = 4u << 20;
 };
 
 // Receives a binary encoding piece by piece. Blob bodies arrive through `reference()`, which a

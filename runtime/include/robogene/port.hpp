@@ -17,24 +17,36 @@
 #include "robogene/bottle.hpp"
 #include "robogene/carrier/message.hpp"
 #include "robogene/contact.hpp"
+#include "robogene/limits.hpp"
 #include "robogene/name_client.hpp"
 #include "robogene/net/endpoint.hpp"
 #include "robogene/net/tcp_stream.hpp"
 
 namespace robogene {
 
+// Defaults come from resource_limits() (robogene/limits.hpp: environment variables), so a
+// deployment changes them without a rebuild; docs/security.md lists them.
 struct PortOptions {
-  std::size_t max_message_size = 64u * 1024u * 1024u;  // larger incoming messages are refused
+  std::size_t max_message_size = resource_limits().max_message_size;  // larger ones are refused
+  // Values one incoming message may decode to (a 1-byte int becomes a 16-byte Value).
+  std::size_t max_decoded_values = resource_limits().max_decoded_values;
   // An output whose reader does not take a message (and its ack) within this time is dropped,
   // so one stalled reader cannot hold the writer or the other outputs for longer.
   net::Millis send_timeout{2000};
   net::Millis connect_timeout{5000};
   net::Millis handshake_timeout{10000};
-  // Connections beyond this many open inputs are closed at once (one thread each).
+  // Connections beyond this many open inputs are closed at once (one thread each); the
+  // process as a whole holds at most ResourceLimits::max_connections.
   std::size_t max_inputs = 512;
   // Who may connect, disconnect and configure this port or write to it over HTTP
   // (docs/security.md); unset = AccessPolicy::from_environment() when the port opens.
   std::optional<AccessPolicy> access;
+  // udp / mcast inputs kept (their writers never say when they leave): one more evicts the
+  // input that has been silent longest.
+  std::size_t max_datagram_inputs = resource_limits().max_datagram_inputs;
+  // How often a registered port checks that the name server still knows it, and registers
+  // again when it does not (0 = never).
+  net::Millis registration_check = resource_limits().registration_check;
 };
 
 // What a reader learns about one incoming message besides its content.

@@ -98,6 +98,11 @@ class Reader {
       fail(at, "list count " + std::to_string(count) + " needs at least " + std::to_string(static_cast<std::uint64_t>(count) * min) +
                    " bytes, only " + std::to_string(remaining()) + " remain");
     }
+    if (count > values_left_) {
+      fail(at, "list of " + std::to_string(count) + " items passes the limit of " +
+                   std::to_string(limits_.max_values) + " values in one bottle");
+    }
+    values_left_ -= count;
     Bottle b;
     b.reserve(count);
     if (fixed_size_items(b, sub, count)) return b;
@@ -189,6 +194,7 @@ class Reader {
   const std::uint8_t* end_;
   bool capped_;
   DecodeLimits limits_;
+  std::size_t values_left_ = limits_.max_values;
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "number_text.hpp"
 #include "robogene/bottle.hpp"
+#include "robogene/text_completeness.hpp"
 #include "robogene/error.hpp"
 
 namespace robogene {
@@ -250,37 +251,36 @@ class Parser {
 
 Bottle Bottle::from_text(std::string_view text) { return Parser(text).parse(); }
 
-bool Bottle::text_is_complete(std::string_view text) {
-  // Mirrors YARP's isComplete plus its line-continuation rule. A surplus ')' or '}' counts as
-  // complete: more lines cannot repair it, and from_text will report it.
-  bool quoted = false;
-  bool escape = false;
-  long parens = 0;
-  long braces = 0;
-  std::size_t end = text.size();
-  if (end > 0 && text[end - 1] == '\n') --end;
-  if (end > 0 && text[end - 1] == '\r') --end;
-  for (std::size_t i = 0; i < end; ++i) {
-    const char c = text[i];
-    if (escape) {
-      escape = false;
+void TextCompleteness::feed(std::string_view text) noexcept {
+  for (const char c : text) {
+    if (escape_) {
+      escape_ = false;
       continue;
     }
     if (c == '\\') {
-      escape = true;
+      escape_ = true;
       continue;
     }
     if (c == '"') {
-      quoted = !quoted;
+      quoted_ = !quoted_;
       continue;
     }
-    if (quoted) continue;
-    if (c == '(') ++parens;
-    if (c == ')') --parens;
-    if (c == '{') ++braces;
-    if (c == '}') --braces;
+    if (quoted_) continue;
+    if (c == '(') ++parens_;
+    if (c == ')') --parens_;
+    if (c == '{') ++braces_;
+    if (c == '}') --braces_;
   }
-  return !escape && !quoted && parens <= 0 && braces <= 0;
+}
+
+bool Bottle::text_is_complete(std::string_view text) {
+  // YARP's isComplete plus its line-continuation rule; one trailing line end is not looked at.
+  std::size_t end = text.size();
+  if (end > 0 && text[end - 1] == '\n') --end;
+  if (end > 0 && text[end - 1] == '\r') --end;
+  TextCompleteness scan;
+  scan.feed(text.substr(0, end));
+  return scan.complete();
 }
 
 }  // namespace robogene

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "binary_connections.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "binary_framing.hpp"
@@ -138,9 +139,20 @@ void BinaryOutbound::expect_ack(const std::uint8_t* first8) {
     throw NetworkError("expected an ack YA 00 00 00 00 RP from " + remote_ + " (" + peer_text() +
                        "), got " + hex_bytes(first8, 8));
   }
-  // The ack may announce bytes to skip (always 0 in practice).
-  std::vector<std::uint8_t> skip(static_cast<std::size_t>(*n));
-  if (!skip.empty()) link_->reader.read_exact(skip.data(), skip.size());
+  // The ack may announce bytes to skip (always 0 in practice): read and dropped a piece at a
+  // time, never as one buffer of the announced size, and no more than a reply may hold.
+  auto skip = static_cast<std::size_t>(*n);
+  if (skip > max_reply_size_) {
+    throw NetworkError("ack from " + remote_ + " (" + peer_text() + ") announces " +
+                       std::to_string(skip) + " bytes to skip, more than the " +
+                       std::to_string(max_reply_size_) + "-byte limit of a reply");
+  }
+  std::uint8_t sink[4096];
+  while (skip > 0) {
+    std::size_t step = std::min(skip, sizeof sink);
+    link_->reader.read_exact(sink, step);
+    skip -= step;
+  }
 }
 
 void BinaryOutbound::close() noexcept {

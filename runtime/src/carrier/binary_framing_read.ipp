@@ -4,6 +4,7 @@
 // Template body of read_message_after_first8 (included by binary_framing.hpp).
 #pragma once
 
+#include "grow_read.hpp"
 #include "robogene/carrier/yarp_number.hpp"
 #include "robogene/error.hpp"
 
@@ -49,8 +50,13 @@ void read_message_after_first8(const std::uint8_t* first8, ReadExact&& read_exac
   std::size_t rest = static_cast<std::size_t>(total) - 8;
   std::size_t str_len = PortCommand::decode_header(cmd_header, rest, body_offset, cmd);
   if (str_len) {
-    std::vector<std::uint8_t> s(str_len);
-    read_exact(s.data(), str_len);
+    // The command string grows with the bytes that come, not with its announced length.
+    struct Source {
+      ReadExact& f;
+      void read_exact(void* p, std::size_t n) { f(p, n); }
+    } source{read_exact};
+    std::vector<std::uint8_t> s;
+    append_growing(source, s, str_len, nullptr);
     cmd.set_string(s.data(), s.size());
     rest -= str_len;
   }

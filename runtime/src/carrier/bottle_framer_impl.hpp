@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "grow_read.hpp"
 #include "robogene/bottle.hpp"
 #include "robogene/carrier/yarp_number.hpp"
 #include "robogene/error.hpp"
@@ -84,11 +85,7 @@ class BottleFramer {
       fail(0, "reply larger than the " + std::to_string(limits_.max_bytes) + "-byte limit");
     }
     std::size_t need_end = start_ + cursor_ + n;
-    if (out_.size() < need_end) {
-      std::size_t at = out_.size();
-      out_.resize(need_end);
-      in_.read_exact(out_.data() + at, need_end - at);
-    }
+    if (out_.size() < need_end) append_growing(in_, out_, need_end - out_.size(), nullptr);
     cursor_ += n;
   }
 

@@ -16,6 +16,7 @@
 
 #include "binary_framing.hpp"
 #include "crc32.hpp"
+#include "grow_read.hpp"
 #include "robogene/carrier/connection.hpp"
 #include "robogene/carrier/encoded_payload.hpp"
 #include "robogene/carrier/yarp_number.hpp"
@@ -54,8 +55,8 @@ class DatagramInbound final : public InboundConnection {
             [&](std::size_t n, InboundMessage& mm) {
               mm.detached_blobs.clear();
               mm.detached_blob_ordinals.clear();
-              mm.payload.resize(n);
-              if (n) pull(mm.payload.data(), n);
+              mm.payload.clear();
+              append_growing(*this, mm.payload, n, nullptr);
             },
             m, max_size_, remote_ + " (" + carrier_ + " " + peer_ + ")");
         m.reply_expected = false;  // connectionless: nobody waits for a reply
@@ -97,6 +98,11 @@ class DatagramInbound final : public InboundConnection {
     }
   }
 
+ public:
+  // The source append_growing reads from: the datagrams of the current message.
+  void read_exact(void* out, std::size_t n) { pull(out, n); }
+
+ private:
   void pull(void* out, std::size_t n) {
     auto* p = static_cast<std::uint8_t*>(out);
     while (n > 0) {

@@ -5,7 +5,11 @@
 // read_exact(void*, size_t) — a tcp StreamReader, a shared-memory ring.
 #pragma once
 
+#include <string>
+
+#include "grow_read.hpp"
 #include "robogene/carrier/yarp_number.hpp"
+#include "robogene/limits.hpp"
 
 namespace robogene::carrier::detail {
 
@@ -19,7 +23,8 @@ struct NotWalkable {};
 template <typename In>
 class PayloadWalker {
  public:
-  PayloadWalker(In& in, std::size_t size, InboundMessage& m) : in_(in), left_(size), m_(m) {}
+  PayloadWalker(In& in, std::size_t size, InboundMessage& m, ReceivingBytes& budget)
+      : in_(in), left_(size), m_(m), budget_(budget) {}
 
   void walk() {
     std::int32_t tag = int32();
@@ -28,9 +33,7 @@ class PayloadWalker {
   }
 
   void read_rest() {
-    std::size_t at = m_.payload.size();
-    m_.payload.resize(at + left_);
-    if (left_) in_.read_exact(m_.payload.data() + at, left_);
+    append_growing(in_, m_.payload, left_, &budget_);
     left_ = 0;
   }
 
@@ -67,7 +70,6 @@ class PayloadWalker {
         if (n >= kDetachBlobsFrom) {
           put_int32(m_.payload.data() + len_at, 0);
           std::vector<std::uint8_t> body = buffer(n);
-          in_.read_exact(body.data(), n);
           left_ -= n;
           m_.detached_blobs.push_back(std::move(body));
           m_.detached_blob_ordinals.push_back(blob_ordinal_);
@@ -82,17 +84,22 @@ class PayloadWalker {
     }
   }
 
-  // A buffer of n bytes, from the spares when one is big enough (shrinking never clears memory).
+  // The next n bytes in a buffer of their own: a spare one when it is big enough (shrinking
+  // never clears memory), else one that grows as the bytes arrive.
   std::vector<std::uint8_t> buffer(std::size_t n) {
     for (auto it = m_.spare_blobs.begin(); it != m_.spare_blobs.end(); ++it) {
       if (it->size() >= n) {
         std::vector<std::uint8_t> v = std::move(*it);
         m_.spare_blobs.erase(it);
         v.resize(n);
+        budget_.add(n);
+        in_.read_exact(v.data(), n);
         return v;
       }
     }
-    return std::vector<std::uint8_t>(n);
+    std::vector<std::uint8_t> v;
+    append_growing(in_, v, n, &budget_);
+    return v;
   }
 
   std::int32_t int32() {
@@ -103,15 +110,14 @@ class PayloadWalker {
 
   void copy(std::size_t n) {
     if (n > left_) throw NotWalkable{};
-    std::size_t at = m_.payload.size();
-    m_.payload.resize(at + n);
-    in_.read_exact(m_.payload.data() + at, n);
+    append_growing(in_, m_.payload, n, &budget_);
     left_ -= n;
   }
 
   In& in_;
   std::size_t left_;
   InboundMessage& m_;
+  ReceivingBytes& budget_;
   std::size_t blob_ordinal_ = 0;
 };
 
@@ -125,7 +131,9 @@ void read_payload_from(In& in, std::size_t size, InboundMessage& m) {
     return;
   }
   m.payload.clear();
-  PayloadWalker<In> w(in, size, m);
+  // Only big messages count in the process total: smaller ones are bounded per connection.
+  ReceivingBytes budget("a message of " + std::to_string(size) + " bytes");
+  PayloadWalker<In> w(in, size, m, budget);
   try {
     w.walk();
   } catch (const NotWalkable&) {

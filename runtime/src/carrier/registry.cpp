@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "binary_framing.hpp"
+#include "handshake_deadline.hpp"
 #include "robogene/carrier/builtin_carriers.hpp"
 #include "robogene/error.hpp"
 
@@ -83,8 +84,20 @@ std::unique_ptr<InboundConnection> accept_connection(net::TcpStream stream,
   auto link = std::make_unique<Link>(std::move(stream));
   link->stream.set_read_timeout(ctx.handshake_timeout);
   link->stream.set_write_timeout(ctx.handshake_timeout);
+  const std::string peer = link->stream.peer_text();
+  detail::HandshakeDeadline deadline(link->stream.fd(), ctx.handshake_deadline);
+  auto late = [&] {
+    return NetworkError("connection from " + peer + ": handshake not complete within " +
+                        std::to_string(ctx.handshake_deadline.count()) +
+                        " ms (the deadline for the whole handshake; ROBOGENE_HANDSHAKE_DEADLINE_MS)");
+  };
   Header header;
-  link->reader.read_exact(header.data(), header.size());
+  try {
+    link->reader.read_exact(header.data(), header.size());
+  } catch (const Error&) {
+    if (deadline.expired()) throw late();
+    throw;
+  }
   auto carrier = registry.find(header);
   if (!carrier) {
     std::string text = protocol_not_found_text(header);
@@ -93,14 +106,21 @@ std::unique_ptr<InboundConnection> accept_connection(net::TcpStream stream,
     } catch (const NetworkError&) {
       // The peer may not be listening; the error below is what matters.
     }
-    std::string peer = link->stream.peer_text();
     link->stream.shutdown();
     throw NetworkError("connection from " + peer + ": unknown carrier header " +
                        detail::hex_bytes(header.data(), header.size()));
   }
   AcceptContext with_header = ctx;
   with_header.header = header;
-  return carrier->accept(std::move(link), with_header);
+  std::unique_ptr<InboundConnection> in;
+  try {
+    in = carrier->accept(std::move(link), with_header);
+  } catch (const Error&) {
+    if (deadline.expired()) throw late();
+    throw;
+  }
+  if (deadline.expired()) throw late();
+  return in;
 }
 
 std::unique_ptr<OutboundConnection> open_connection(const net::Endpoint& at,

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "robogene/error.hpp"
+#include "robogene/limits.hpp"
 
 namespace robogene::carrier::detail {
 
@@ -96,6 +97,7 @@ std::uint64_t align64(std::uint64_t v) { return (v + 63) & ~std::uint64_t{63}; }
 ShmSegment::~ShmSegment() {
   if (base_) ::munmap(base_, size_);
   unlink();
+  if (counted_) ResourceUsage::global().remove_shmem_segment();
 }
 
 void ShmSegment::unlink() noexcept {
@@ -105,6 +107,12 @@ void ShmSegment::unlink() noexcept {
 
 std::unique_ptr<ShmSegment> ShmSegment::create(std::uint32_t capacity0, std::uint32_t capacity1) {
   auto s = std::make_unique<ShmSegment>();
+  if (!ResourceUsage::global().try_add_shmem_segment()) {
+    throw NetworkError("cannot create another shared-memory segment: this process already holds " +
+                       std::to_string(resource_limits().max_shmem_segments) +
+                       " (ROBOGENE_MAX_SHMEM_SEGMENTS)");
+  }
+  s->counted_ = true;
   s->name_ = fresh_name();
   int fd = ::shm_open(s->name_.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
   if (fd < 0) throw NetworkError("cannot create shared memory " + s->name_ + ": " + errno_text(errno));
@@ -130,6 +138,10 @@ std::unique_ptr<ShmSegment> ShmSegment::create(std::uint32_t capacity0, std::uin
   s->header_->size = s->size_;
   init_ring(s->header_->rings[0], capacity0, off0);
   init_ring(s->header_->rings[1], capacity1, off1);
+  s->capacity_[0] = capacity0;
+  s->capacity_[1] = capacity1;
+  s->offset_[0] = off0;
+  s->offset_[1] = off1;
   return s;
 }
 
@@ -158,21 +170,38 @@ std::unique_ptr<ShmSegment> ShmSegment::open(const std::string& name) {
     throw ParseError(0, "shared memory " + name + " is not a Robogene shmem segment of version " +
                             std::to_string(kVersion));
   }
-  for (const ShmRing& r : h.rings) {
-    if (r.capacity == 0 || r.data_offset < sizeof(ShmSegmentHeader) || r.data_offset + r.capacity > s->size_) {
+  for (int i = 0; i < 2; ++i) {
+    // One read of each field: the creator may change them while we look.
+    const std::uint32_t capacity = h.rings[i].capacity;
+    const std::uint64_t offset = h.rings[i].data_offset;
+    if (capacity == 0 || offset < sizeof(ShmSegmentHeader) || offset > s->size_ ||
+        capacity > s->size_ - offset) {
       throw ParseError(0, "shared memory " + name + ": a ring lies outside the segment");
     }
+    s->capacity_[i] = capacity;
+    s->offset_[i] = offset;
   }
   return s;
 }
 
 ShmStream::ShmStream(ShmSegment& seg, int ring, std::string peer, PeerCheck alive)
-    : seg_(seg), r_(seg.ring(ring)), data_(seg.data(r_)), peer_(std::move(peer)), alive_(std::move(alive)) {}
+    : seg_(seg), r_(seg.ring(ring)), capacity_(seg.capacity(ring)), data_(seg.data(ring)),
+      peer_(std::move(peer)), alive_(std::move(alive)) {}
 
 void ShmStream::fail(const std::string& what) const { throw NetworkError("shmem peer " + peer_ + " " + what); }
 
+std::size_t ShmStream::filled(std::uint64_t head, std::uint64_t tail) const {
+  const std::uint64_t n = head - tail;
+  if (n > capacity_) {
+    fail("corrupted its ring: " + std::to_string(n) + " bytes claimed in a ring of " +
+         std::to_string(capacity_));
+  }
+  return static_cast<std::size_t>(n);
+}
+
 std::size_t ShmStream::available() const noexcept {
-  return static_cast<std::size_t>(r_.head.load(std::memory_order_acquire) - r_.tail.load(std::memory_order_relaxed));
+  const std::uint64_t n = r_.head.load(std::memory_order_acquire) - r_.tail.load(std::memory_order_relaxed);
+  return n > capacity_ ? 0 : static_cast<std::size_t>(n);
 }
 
 std::size_t ShmStream::wait_for_bytes(net::Millis timeout, bool at_message_start) {
@@ -180,7 +209,7 @@ std::size_t ShmStream::wait_for_bytes(net::Millis timeout, bool at_message_start
   for (;;) {
     const std::uint64_t t = r_.tail.load(std::memory_order_relaxed);
     const std::uint64_t h = r_.head.load(std::memory_order_acquire);
-    if (h != t) return static_cast<std::size_t>(h - t);
+    if (h != t) return filled(h, t);
     if (r_.closed.load()) {
       if (at_message_start) return 0;
       fail("closed the connection in the middle of a message");
@@ -205,7 +234,8 @@ std::size_t ShmStream::wait_for_space(net::Millis timeout) {
     const std::uint64_t h = r_.head.load(std::memory_order_relaxed);
     const std::uint64_t t = r_.tail.load(std::memory_order_acquire);
     if (r_.closed.load()) fail("closed the connection");
-    if (h - t < r_.capacity) return static_cast<std::size_t>(r_.capacity - (h - t));
+    const std::size_t used = filled(h, t);
+    if (used < capacity_) return capacity_ - used;
     if (!alive_()) fail("vanished");
     if (Clock::now() >= until) fail("did not take our bytes for " + std::to_string(timeout.count()) + " ms (timed out)");
     if (spin_until([&] { return r_.tail.load(std::memory_order_acquire) != t; })) continue;
@@ -233,8 +263,8 @@ void ShmStream::write(const iovec* iov, std::size_t count, net::Millis timeout) 
       std::size_t room = wait_for_space(timeout.count() > 0 ? remaining : net::kNoTimeout);
       std::size_t n = std::min(room, left);
       const std::uint64_t h = r_.head.load(std::memory_order_relaxed);
-      std::size_t at = static_cast<std::size_t>(h % r_.capacity);
-      std::size_t first = std::min(n, r_.capacity - at);
+      std::size_t at = static_cast<std::size_t>(h % capacity_);
+      std::size_t first = std::min<std::size_t>(n, capacity_ - at);
       std::memcpy(data_ + at, p, first);
       std::memcpy(data_, p + first, n - first);
       r_.head.store(h + n);  // sequentially consistent: pairs with reader_waiting below
@@ -254,8 +284,8 @@ void ShmStream::read_exact(void* data, std::size_t size) {
   while (size > 0) {
     std::size_t n = std::min(wait_for_bytes(read_timeout_, false), size);
     const std::uint64_t t = r_.tail.load(std::memory_order_relaxed);
-    std::size_t at = static_cast<std::size_t>(t % r_.capacity);
-    std::size_t first = std::min(n, r_.capacity - at);
+    std::size_t at = static_cast<std::size_t>(t % capacity_);
+    std::size_t first = std::min<std::size_t>(n, capacity_ - at);
     std::memcpy(out, data_ + at, first);
     std::memcpy(out + first, data_, n - first);
     r_.tail.store(t + n);

@@ -53,7 +53,8 @@ class ShmSegment {
   ShmSegment& operator=(const ShmSegment&) = delete;
 
   // Creates a fresh segment with rings of the given capacities; its name (for the peer) is
-  // name(). Throws NetworkError saying what the system refused.
+  // name(). Throws NetworkError saying what the system refused, or that the process already
+  // holds ResourceLimits::max_shmem_segments of them.
   static std::unique_ptr<ShmSegment> create(std::uint32_t capacity0, std::uint32_t capacity1);
   // Maps a segment the peer created and checks that its header is sane (magic, version, sizes
   // within the object). Throws NetworkError / ParseError naming the segment.
@@ -63,15 +64,20 @@ class ShmSegment {
 
   const std::string& name() const noexcept { return name_; }
   ShmRing& ring(int i) noexcept { return header_->rings[i]; }
-  std::uint8_t* data(const ShmRing& r) noexcept { return base_ + r.data_offset; }
+  // A ring's capacity and data as checked when the segment was created or opened.
+  std::uint32_t capacity(int i) const noexcept { return capacity_[i]; }
+  std::uint8_t* data(int i) noexcept { return base_ + offset_[i]; }
 
  private:
   std::string name_;
   std::uint8_t* base_ = nullptr;
   std::size_t size_ = 0;
   ShmSegmentHeader* header_ = nullptr;
+  std::uint32_t capacity_[2] = {0, 0};
+  std::uint64_t offset_[2] = {0, 0};
   bool owner_ = false;
   bool linked_ = false;
+  bool counted_ = false;  // in ResourceUsage's count of segments this process created
 };
 
 // One direction of a shmem connection as a byte stream: write() copies gathered buffers in,
@@ -94,10 +100,15 @@ class ShmStream {
  private:
   std::size_t wait_for_bytes(net::Millis timeout, bool at_message_start);
   std::size_t wait_for_space(net::Millis timeout);
+  // head - tail, checked: the peer can write any number into the shared counters.
+  std::size_t filled(std::uint64_t head, std::uint64_t tail) const;
   [[noreturn]] void fail(const std::string& what) const;
 
   ShmSegment& seg_;
   ShmRing& r_;
+  // Read once from the segment and checked when it was mapped: the peer can rewrite the
+  // shared copy at any time, so every operation uses these.
+  const std::uint32_t capacity_;
   std::uint8_t* data_;
   std::string peer_;
   PeerCheck alive_;

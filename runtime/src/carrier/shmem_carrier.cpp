@@ -42,6 +42,14 @@ class ShmemCarrier final : public Carrier {
   std::unique_ptr<InboundConnection> accept(std::unique_ptr<Link> link,
                                             const AcceptContext& ctx) const override {
     std::string remote = detail::read_binary_sender_name(*link, ctx.max_name_length);
+    // Shared memory works only between processes of one host: a peer on another host gets no
+    // segment (9 MB each) for a handshake that cannot succeed. A local peer is one whose
+    // address is ours (loopback, or the interface it reached us on).
+    const std::string& from = link->stream.peer().host;
+    if (from != link->stream.local().host && from.rfind("127.", 0) != 0) {
+      throw NetworkError("shmem connection from " + remote + " (" + link->stream.peer_text() +
+                         "): refused, the peer is on another host (shmem needs both ports on one host)");
+    }
     auto seg = detail::ShmSegment::create(kForwardRing, kBackwardRing);
     std::vector<std::uint8_t> answer;
     Header n = make_yarp_number(static_cast<std::int32_t>(seg->name().size() + 1));

@@ -3,6 +3,7 @@
 #include "text_connections.hpp"
 
 #include "robogene/error.hpp"
+#include "robogene/text_completeness.hpp"
 
 namespace robogene::carrier::detail {
 
@@ -44,19 +45,33 @@ bool TextInbound::read(InboundMessage& m) {
 }
 
 void TextInbound::read_bottle_text(InboundMessage& m) {
+  // Completeness is tracked as lines arrive, never by rescanning all the text so far (that
+  // made a long message cost time quadratic in its lines). Like text_is_complete, the scan
+  // leaves out the text's last line end, which a following non-empty line brings in.
   std::string text;
+  TextCompleteness scan;
+  bool newline_pending = false;
   for (;;) {
     std::string line = link_->reader.read_line(max_line_);
     bool continued = !line.empty() && line.back() == '\\';
     if (continued) line.pop_back();
-    if (!text.empty()) text += '\n';
+    if (!text.empty()) {
+      text += '\n';
+      if (newline_pending) scan.feed("\n");
+      newline_pending = true;
+    }
     text += line;
+    if (!line.empty()) {
+      if (newline_pending) scan.feed("\n");
+      newline_pending = false;
+      scan.feed(line);
+    }
     if (text.size() > max_message_size_) {
       throw ParseError(text.size(), "text message from " + remote_ + " (" + peer_text() +
                                         ") exceeds the maximum message size of " +
                                         std::to_string(max_message_size_) + " bytes");
     }
-    if (!continued && Bottle::text_is_complete(text)) break;
+    if (!continued && scan.complete()) break;
   }
   m.payload.assign(text.begin(), text.end());
 }

@@ -78,6 +78,7 @@ void reply_text(carrier::InboundConnection& in, const std::string& text) { in.re
 void serve_root_messages(RootPortContext& c, carrier::InboundConnection& in) {
   carrier::InboundMessage m;
   while (in.read(m)) {
+    if (c.heard) c.heard();
     switch (m.key) {
       case 'd':
       case 'D': {

@@ -21,6 +21,7 @@ struct RootPortContext {
   std::string peer_host;     // IP of the other side, for `register` without an address
   std::string root_address;  // "tcp://127.0.0.1:10000/"
   std::function<std::vector<NameServer::Peer>()> peers;
+  std::function<void()> heard;  // called as each message arrives (idle tracking); may be empty
 };
 
 // Serves messages until the peer closes or sends 'q'. Throws NetworkError / ParseError when the

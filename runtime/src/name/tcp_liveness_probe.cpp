@@ -4,8 +4,11 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
-#include "robogene/carrier/registry.hpp"
+#include "../carrier/binary_connections.hpp"
+#include "../carrier/sender_name.hpp"
+#include "robogene/carrier/yarp_number.hpp"
 #include "robogene/error.hpp"
 #include "robogene/net/tcp_stream.hpp"
 
@@ -19,20 +22,37 @@ Liveness TcpLivenessProbe::probe(const Registration& r) {
     // Only a refusal proves nobody is there; anything else may be the network's fault.
     return std::string(e.what()).find("refused") != std::string::npos ? Liveness::Dead : Liveness::Unknown;
   }
-  auto tcp = carrier::CarrierRegistry::global().find("tcp");
-  if (!tcp) throw Error("the tcp carrier is not registered");
-  carrier::ConnectContext ctx;
-  ctx.sender_name = "admin";  // not rooted: YARP ports do not announce such connections
-  ctx.target_name = r.name;
-  ctx.timeout = net::Millis{answer_timeout_ms_};
-  std::unique_ptr<carrier::OutboundConnection> out;
+  // The tcp handshake by hand, to tell "answered, but not as a port" (a stale entry whose number
+  // another program now uses) from "accepted and hung up or stayed silent": that is what a port
+  // does when it is busy (at its limit of inputs, or flooded), and a busy port is alive.
+  std::uint8_t answer[8];
+  std::size_t got = 0;
   try {
-    out = tcp->connect(std::make_unique<carrier::Link>(std::move(s)), ctx);
-  } catch (const Error&) {
-    // Silent, closed, or answered something else: whatever listens there is not a port.
-    return Liveness::Dead;
+    s.set_read_timeout(net::Millis{answer_timeout_ms_});
+    s.set_write_timeout(net::Millis{answer_timeout_ms_});
+    std::vector<std::uint8_t> hello;
+    carrier::Header h = carrier::make_yarp_number(carrier::kTcpSpecifier);
+    hello.insert(hello.end(), h.begin(), h.end());
+    carrier::detail::append_binary_sender_name(hello, "admin");  // not rooted: not announced
+    s.write_all(hello.data(), hello.size());
+    while (got < sizeof answer) {
+      std::size_t n = s.read_some(answer + got, sizeof answer - got);
+      if (n == 0) break;
+      got += n;
+    }
+  } catch (const NetworkError&) {
+    // Reset or timed out: busy or slow, not proven gone.
   }
-  out->close();  // the polite 'q'
+  if (got < sizeof answer) {
+    const bool foreign = got >= 1 && answer[0] != 'Y';
+    return foreign ? Liveness::Dead : Liveness::Unknown;
+  }
+  if (!carrier::read_yarp_number(answer)) return Liveness::Dead;
+  // A port: leave politely with 'q', as YARP's own probes do.
+  carrier::detail::BinaryOutbound out(std::make_unique<carrier::Link>(std::move(s)), "tcp", true, r.name,
+                                      1024);
+  out.set_timeout(net::Millis{answer_timeout_ms_});
+  out.close();
   return Liveness::Alive;
 }
 

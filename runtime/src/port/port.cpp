@@ -40,6 +40,62 @@ void Port::open_at(const std::string& name, const net::Endpoint& at) {
   log::info(name, "Port " + name + " active at " + core_->address.uri());
 }
 
+namespace {
+
+// What YARP clients record next to a registration (reference section 4.1).
+void advertise(NameClient& names, const std::string& name) {
+  const std::vector<std::string> carriers = carrier::CarrierRegistry::global().names();
+  names.set_property(name, "offers", carriers);
+  names.set_property(name, "accepts", carriers);
+  names.set_property(name, "process", {std::to_string(::getpid())});
+}
+
+}  // namespace
+
+void Port::Core::start_keeper() {
+  if (options.registration_check.count() <= 0 || !names) return;
+  {
+    std::lock_guard<std::mutex> lock(keeper_mutex);
+    keeper_stop = false;
+  }
+  keeper = std::thread([self = shared_from_this()] { self->keep_registered(); });
+}
+
+void Port::Core::keep_registered() {
+  bool warned_taken = false;
+  std::unique_lock<std::mutex> lock(keeper_mutex);
+  for (;;) {
+    keeper_cv.wait_for(lock, options.registration_check, [this] { return keeper_stop; });
+    if (keeper_stop) return;
+    lock.unlock();
+    try {
+      auto known = names->query(name);
+      if (!known) {
+        names->register_name(name, "tcp", address.host, address.port);
+        advertise(*names, name);
+        log::warn(name, "the name server had lost " + name + "; registered it again at " + address.uri());
+        warned_taken = false;
+      } else if ((known->host != address.host || known->port != address.port) && !warned_taken) {
+        log::warn(name, "the name server gives " + name + " to " + known->uri() + ", not to this port at " +
+                            address.uri() + "; leaving it to that port");
+        warned_taken = true;
+      }
+    } catch (const std::exception& e) {
+      log::debug(name, std::string("could not check the registration (will try again): ") + e.what());
+    }
+    lock.lock();
+  }
+}
+
+void Port::Core::stop_keeper() {
+  {
+    std::lock_guard<std::mutex> lock(keeper_mutex);
+    keeper_stop = true;
+  }
+  keeper_cv.notify_all();
+  if (keeper.joinable() && keeper.get_id() != std::this_thread::get_id()) keeper.join();
+}
+
 void Port::open(const std::string& name, NameClient names) {
   if (core_->open) throw Error("port " + core_->name + " is already open");
   if (name.empty() || name[0] != '/') throw Error("port name \"" + name + "\" must start with '/'");
@@ -50,11 +106,7 @@ void Port::open(const std::string& name, NameClient names) {
   core_->registered = true;
   try {
     core_->start_listening({reg.host, reg.port});
-    // What YARP clients record next to a registration (reference section 4.1).
-    const std::vector<std::string> carriers = carrier::CarrierRegistry::global().names();
-    names.set_property(name, "offers", carriers);
-    names.set_property(name, "accepts", carriers);
-    names.set_property(name, "process", {std::to_string(::getpid())});
+    advertise(names, name);
   } catch (...) {
     try {
       names.unregister(name);
@@ -64,6 +116,7 @@ void Port::open(const std::string& name, NameClient names) {
     core_->shutdown();
     throw;
   }
+  core_->start_keeper();
   log::info(name, "Port " + name + " active at " + core_->address.uri());
 }
 
@@ -90,6 +143,7 @@ void Port::Core::shutdown() {
     std::lock_guard<std::mutex> lock(hand_mutex);
     hand_cv.notify_all();
   }
+  stop_keeper();  // before unregistering: it must not register the name again
   if (registered && names) {
     try {
       names->unregister(name);

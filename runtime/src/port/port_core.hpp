@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "robogene/carrier/connection.hpp"
+#include "robogene/limits.hpp"
 #include "robogene/net/tcp_listener.hpp"
 #include "robogene/port.hpp"
 
@@ -36,6 +37,14 @@ struct InputUnit {
   std::thread thread;
   std::atomic<int> tid{-1};  // the thread's kernel id, for [prop] [get] / [set] (sched ...)
   bool done = false;
+  bool connectionless = false;  // udp / mcast: counted against max_datagram_inputs
+  bool evicted = false;         // told to leave to make room (its thread is winding down)
+  // When the connection last delivered a message (steady clock), to evict the longest-silent
+  // datagram input first.
+  std::atomic<std::int64_t> last_heard{0};
+  // After 'r': the output this connection became, watched until its reader hangs up.
+  std::shared_ptr<OutputUnit> reversed;
+  ConnectionSlot slot;  // this connection's share of ResourceLimits::max_connections
 };
 
 struct Port::Core : std::enable_shared_from_this<Port::Core> {
@@ -89,7 +98,23 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
               carrier::InboundMessage& msg);
   void deliver(const Bottle& data, const MessageInfo& info, Bottle* reply);
   void reap_finished_inputs();
+  // Makes room for a new udp / mcast input `unit` (under mutex): interrupts the input silent
+  // longest when the port already holds max_datagram_inputs of them.
+  void evict_silent_datagram_input(const InputUnit& unit);
+  // Until the reversed output's reader hangs up (or the output is dropped, or the port closes).
+  void watch_reversed(const std::shared_ptr<OutputUnit>& out);
   void shutdown();
+
+  // Registration keeping: a port whose name the server lost (unregistered while the port was
+  // too busy to answer a liveness probe, or a server restarted without its database)
+  // registers again at the same address.
+  std::thread keeper;
+  std::mutex keeper_mutex;
+  std::condition_variable keeper_cv;
+  bool keeper_stop = false;
+  void start_keeper();
+  void keep_registered();
+  void stop_keeper();
 
   // Operations shared by the API, admin messages and text commands; each returns YARP's
   // one-line report ("Added connection from /w to tcp://r\r\n") and whether it worked.

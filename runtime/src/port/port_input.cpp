@@ -3,8 +3,11 @@
 //
 // Input side of a Port: accepting connections, one thread per connection, the message loop
 // with data, admin, reverse, quit and the text-mode commands of reference section 3.5.
+#include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <string>
 #include <system_error>
 
@@ -56,6 +59,13 @@ void Port::Core::accept_loop() {
                           std::to_string(inputs.size()) + " inputs (the limit)");
       continue;  // the stream closes as it goes out of scope
     }
+    unit->slot = ConnectionSlot::try_take();
+    if (!unit->slot.held()) {
+      log::warn(name, "refused a connection from " + s->peer_text() + ": the process already serves " +
+                          std::to_string(resource_limits().max_connections) +
+                          " connections (ROBOGENE_MAX_CONNECTIONS)");
+      continue;
+    }
     try {
       unit->thread = std::thread(
           [self = shared_from_this(), unit, stream = std::move(*s)]() mutable {
@@ -97,14 +107,20 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
   const std::string peer_host = stream.peer().host;
   std::string peer = stream.peer_text();
   std::unique_ptr<carrier::InboundConnection> conn;
+  auto finished = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    unit->conn = nullptr;
+    unit->done = true;
+    unit->slot = ConnectionSlot{};
+  };
   try {
     conn = carrier::accept_connection(std::move(stream), ctx);
   } catch (const std::exception& e) {
     log::warn(name, std::string("rejected a connection: ") + e.what());
-    std::lock_guard<std::mutex> lock(mutex);
-    unit->done = true;
+    finished();
     return;
   }
+  unit->last_heard = std::chrono::steady_clock::now().time_since_epoch().count();
   {
     std::lock_guard<std::mutex> lock(mutex);
     unit->from = conn->remote_name();
@@ -112,8 +128,13 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
     unit->peer_host = peer_host;
     if (closing) {
       unit->done = true;
+      unit->slot = ConnectionSlot{};
       return;
     }
+    // Datagram writers never say when they leave (YARP's neither): their inputs are bounded
+    // by count, and the one silent longest makes room for a new one.
+    unit->connectionless = conn->carrier_name() == "udp" || conn->carrier_name() == "mcast";
+    if (unit->connectionless) evict_silent_datagram_input(*unit);
     // A new rooted connection from the same source replaces older ones (YARP does the same).
     if (rooted(unit->from)) {
       for (auto& other : inputs) {
@@ -131,6 +152,7 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
   carrier::InboundMessage msg;
   try {
     while (!closing && conn && conn->read(msg)) {
+      unit->last_heard = std::chrono::steady_clock::now().time_since_epoch().count();
       if (!handle(*unit, conn, msg)) break;
     }
   } catch (const std::exception& e) {
@@ -140,10 +162,55 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
   }
   {
     std::lock_guard<std::mutex> lock(mutex);
-    unit->conn = nullptr;
-    unit->done = true;
+    unit->conn = nullptr;  // before the connection goes: others look at it under the mutex
   }
+  conn.reset();
+  if (unit->reversed) {
+    watch_reversed(unit->reversed);
+    unit->reversed.reset();
+  }
+  finished();
   if (noticed) log::info(name, "Removing input from " + unit->from + " to " + name);
+}
+
+void Port::Core::evict_silent_datagram_input(const InputUnit& unit) {
+  std::size_t held = 0;
+  InputUnit* silent = nullptr;
+  for (auto& other : inputs) {
+    if (other.get() == &unit || other->done || other->evicted || !other->conn || !other->connectionless) continue;
+    ++held;
+    if (!silent || other->last_heard < silent->last_heard) silent = other.get();
+  }
+  if (held < options.max_datagram_inputs || !silent) return;
+  log::warn(name, "dropping the " + silent->carrier + " input from " + silent->from +
+                      " (silent longest) to make room: already " + std::to_string(held) +
+                      " datagram inputs (ROBOGENE_MAX_DATAGRAM_INPUTS)");
+  silent->evicted = true;
+  silent->conn->interrupt();
+}
+
+void Port::Core::watch_reversed(const std::shared_ptr<OutputUnit>& out) {
+  const int fd = out->conn->socket_fd();
+  if (fd < 0) return;  // shmem: its own peer check drops it on the next write
+  for (;;) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (closing || std::find(outputs.begin(), outputs.end(), out) == outputs.end()) return;
+    }
+    // Only a hang-up matters: the reader's acks (POLLIN) are for the writer to read.
+    pollfd p{fd, POLLRDHUP, 0};
+    int n = ::poll(&p, 1, 200);
+    if (n > 0 && (p.revents & (POLLRDHUP | POLLHUP | POLLERR | POLLNVAL))) break;
+  }
+  std::lock_guard<std::mutex> lock(out->mutex);  // not in the middle of a write
+  {
+    std::lock_guard<std::mutex> lock2(mutex);
+    auto it = std::find(outputs.begin(), outputs.end(), out);
+    if (it == outputs.end()) return;
+    outputs.erase(it);
+  }
+  log::info(name, "Removing output from " + name + " to " + out->target + " (the reader hung up)");
+  out->conn->close();
 }
 
 bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnection>& conn,
@@ -156,6 +223,7 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
       try {
         DecodeLimits limits;
         limits.max_bytes = options.max_message_size;
+        limits.max_values = options.max_decoded_values;
         data = msg.take_bottle(limits);
       } catch (const ParseError& e) {
         log::warn(name, "dropped a message from " + unit.from + " (" + c.peer_text() +
@@ -197,6 +265,7 @@ bool Port::Core::handle(InputUnit& unit, std::unique_ptr<carrier::InboundConnect
       }
       log::info(name, "Sending output from " + name + " to " + unit.from + " using " +
                           unit.carrier + " (reversed)");
+      unit.reversed = out;
       add_unit(std::move(out));
       return false;
     }

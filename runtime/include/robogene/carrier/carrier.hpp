@@ -17,16 +17,19 @@
 #include "robogene/bottle.hpp"
 #include "robogene/carrier/connection.hpp"
 #include "robogene/carrier/yarp_number.hpp"
+#include "robogene/limits.hpp"
 #include "robogene/net/tcp_stream.hpp"
 
 namespace robogene::carrier {
 
 struct AcceptContext {
   std::string local_name;                          // our port name, for "Welcome" and logs
-  std::size_t max_message_size = 64u * 1024u * 1024u;
+  std::size_t max_message_size = resource_limits().max_message_size;
   std::size_t max_name_length = 1000;              // YARP's cap on sender names
   std::size_t max_line_length = 1u << 20;          // text carriers
-  net::Millis handshake_timeout{10000};            // a silent peer cannot hold a thread for ever
+  net::Millis handshake_timeout{10000};            // each read: a silent peer cannot hold a thread
+  // The whole handshake, however slowly its bytes drip in (0 = none).
+  net::Millis handshake_deadline = resource_limits().handshake_deadline;
   // Who may write through carriers that check it themselves (http refuses writes itself).
   AccessPolicy access;
   // Data messages that change nothing (the name server's query, list...): served to browsers

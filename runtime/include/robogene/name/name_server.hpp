@@ -24,11 +24,15 @@
 namespace robogene::name {
 
 struct NameServerLimits {
-  std::size_t max_connections = 256;         // more are refused with a message
+  // Sessions served at once. At the limit a new connection makes the session that has been
+  // idle longest leave (YARP clients open one short connection per request, so an old idle
+  // session is a forgotten telnet or a flood); only if none can leave is it refused.
+  std::size_t max_connections = 256;
   std::size_t max_line = 64 * 1024;          // one text command
   std::size_t max_message = 1024 * 1024;     // one binary message
-  int handshake_timeout_ms = 10000;          // to send the 8 header bytes and the name
-  int idle_timeout_ms = 30 * 60 * 1000;      // between commands of a text/tcp session
+  int handshake_timeout_ms = 10000;          // each read of the handshake; the whole of it is
+                                             // bounded by ResourceLimits::handshake_deadline
+  int idle_timeout_ms = 10 * 60 * 1000;      // between commands of a session (0 = none)
   int write_timeout_ms = 10000;              // a peer that does not read is dropped
 };
 
@@ -60,6 +64,14 @@ class NameServer {
   struct Session;
   void serve(Session& session);
   void reap_finished();
+  // Interrupts `s` (its thread then ends and is reaped).
+  void tell_to_leave(Session& s);
+  // Ends sessions idle longer than idle_timeout_ms.
+  void drop_idle();
+  // At max_connections, tells the idlest session to leave; false when the new connection must
+  // be refused instead (too many sessions still winding down).
+  bool make_room();
+  static constexpr std::size_t kLeavingSlack = 64;
 
   NameService& service_;
   NameServerLimits limits_;
