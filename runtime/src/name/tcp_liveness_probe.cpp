@@ -23,10 +23,12 @@ Liveness TcpLivenessProbe::probe(const Registration& r) {
     return std::string(e.what()).find("refused") != std::string::npos ? Liveness::Dead : Liveness::Unknown;
   }
   // The tcp handshake by hand, to tell "answered, but not as a port" (a stale entry whose number
-  // another program now uses) from "accepted and hung up or stayed silent": that is what a port
-  // does when it is busy (at its limit of inputs, or flooded), and a busy port is alive.
+  // another program now uses) or "accepted but never answered" (a listener that is no port: every
+  // port, however busy, answers from a thread of its own) from "accepted and hung up": that is
+  // what a port at its limit of inputs or connections does, and a busy port is alive.
   std::uint8_t answer[8];
   std::size_t got = 0;
+  bool silent = false;
   try {
     s.set_read_timeout(net::Millis{answer_timeout_ms_});
     s.set_write_timeout(net::Millis{answer_timeout_ms_});
@@ -40,12 +42,13 @@ Liveness TcpLivenessProbe::probe(const Registration& r) {
       if (n == 0) break;
       got += n;
     }
-  } catch (const NetworkError&) {
-    // Reset or timed out: busy or slow, not proven gone.
+  } catch (const NetworkError& e) {
+    // Reset: busy, not proven gone. Timed out with nothing said: no port is listening there.
+    silent = got == 0 && std::string(e.what()).find("timed out") != std::string::npos;
   }
   if (got < sizeof answer) {
     const bool foreign = got >= 1 && answer[0] != 'Y';
-    return foreign ? Liveness::Dead : Liveness::Unknown;
+    return foreign || silent ? Liveness::Dead : Liveness::Unknown;
   }
   if (!carrier::read_yarp_number(answer)) return Liveness::Dead;
   // A port: leave politely with 'q', as YARP's own probes do.

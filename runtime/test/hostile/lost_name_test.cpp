@@ -89,6 +89,19 @@ TEST(HostileLostName, ProbeStillDropsANameNobodyListensOn) {
   EXPECT_TRUE(std::find(gone.begin(), gone.end(), "/gone") != gone.end());
 }
 
+// A listener that accepts (the kernel's backlog) but never answers the handshake is no port: every
+// port answers from a thread of its own, however busy. Its name goes, as it did before the probe
+// learnt to spare ports that hang up when full.
+TEST(HostileLostName, ProbeDropsAListenerThatNeverAnswers) {
+  log::set_level(log::Level::Error);
+  ProbingNameServer ns;
+  auto impostor = net::TcpListener::listen({"127.0.0.1", 0});  // never accepts
+  ns.client().register_name("/impostor", "tcp", "127.0.0.1", impostor.local().port);
+  auto gone = ns.service.sweep();
+  EXPECT_TRUE(std::find(gone.begin(), gone.end(), "/impostor") != gone.end())
+      << "a listener that never answered the handshake was kept as a busy port";
+}
+
 TEST(HostileLostName, APortWhoseNameWasLostRegistersAgain) {
   log::set_level(log::Level::Error);
   ProbingNameServer ns;

@@ -4,7 +4,8 @@
 // Probes a registration the way a polite YARP peer would: connect, send the tcp carrier header
 // with the non-rooted sender name "admin" (ports do not log such connections), expect the
 // "YA <port> RP" answer, then close with a proper 'q' message and wait for its ack.
-// Refused, or answered but not like a port -> Dead. Timeout or unreachable network -> Unknown.
+// Refused, silent past the answer timeout, or answered but not like a port -> Dead. Accepted and
+// hung up (a port at its limit of inputs), or an unreachable network -> Unknown.
 #pragma once
 
 #include "robogene/name/liveness.hpp"
