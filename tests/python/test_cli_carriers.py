@@ -203,7 +203,8 @@ def test_http_calls_and_json_from_an_rpc_port(name_server, procs, robogene_bin, 
 
 @pytest.mark.skipif(shutil.which("curl") is None, reason="curl is not installed")
 def test_http_read_stream_with_curl(name_server, procs, robogene_bin, yarp_env, cli):
-    writer = start_write(procs, robogene_bin, yarp_env, "/w")
+    # At info level, so the port's note that the browser hung up is printed.
+    writer = start_write(procs, robogene_bin, dict(yarp_env, ROBOGENE_LOG="info"), "/w")
     host, port = address(cli, "/w")
     curl = procs.start("curl /r", ["curl", "-sN", f"http://{host}:{port}/r"], yarp_env)
     curl.wait_for_line("Reading data from port")
