@@ -71,7 +71,9 @@ class DeadlineTimer {
       }
       auto first = due_.begin();
       if (Clock::now() < first->first) {
-        cv_.wait_until(lock, first->first);
+        // A copy: waiting releases the lock, and remove() may erase the entry (and its key) meanwhile.
+        const Clock::time_point when = first->first;
+        cv_.wait_until(lock, when);
         continue;
       }
       ::shutdown(first->second.fd, SHUT_RDWR);

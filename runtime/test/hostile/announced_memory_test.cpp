@@ -176,6 +176,9 @@ TEST(HostileAnnounce, ProcessWideBudgetCutsPeersHoldingPartlySentMessages) {
   ScopedLimits scoped(l);
   Port r;
   r.open_at("/r", {"127.0.0.1", 0});
+  // The attackers live in this process too: one 3 MB message, made before the baseline, serves them
+  // all, so the peak measures the port's buffers and not 16 copies of the attack.
+  const auto partial = announced_blob(32 << 20, 3 << 20);
   ProcessUsage::reset_peak_rss();
   const ProcessUsage before = ProcessUsage::now();
   // 16 peers each send 3 MB of an announced 32 MB blob and stall: 48 MB held without limits.
@@ -184,7 +187,7 @@ TEST(HostileAnnounce, ProcessWideBudgetCutsPeersHoldingPartlySentMessages) {
     peers.push_back(handshaken(r, "/part" + std::to_string(i)));
     try {
       peers.back().set_write_timeout(2000ms);
-      send(peers.back(), announced_blob(32 << 20, 3 << 20));
+      send(peers.back(), partial);
     } catch (const std::exception&) {
       // Cut while sending: the budget is already full.
     }
