@@ -245,10 +245,10 @@ def test_speed_limit_beyond_the_drive(tree):
 
 
 def test_slower_motor_lowers_the_speed_limit(tree):
-    """The check follows the motor's catalogue speed: at 4000 rpm the 1717 tilt drive reaches 74.5 deg/s."""
-    errs, _ = _errors(tree, "no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}")
+    """The check follows the motor's catalogue speed: at 2000 rpm the 1724 tilt drive reaches 122.1 deg/s."""
+    errs, _ = _errors(tree, "no_load_speed_rpm: 8200,", "no_load_speed_rpm: 2000,")
     assert any(e.endswith("motor_control.joints.eyes_tilt.max_velocity: 150 deg/s is faster than the drive can turn "
-                          "the joint: 74.47 deg/s (faulhaber-1717T012SR at its no-load speed through the 322.3:1 "
+                          "the joint: 122.1 deg/s (faulhaber-1724T012SR at its no-load speed through the 98.29:1 "
                           "reduction)") for e in errs), errs
 
 
@@ -265,7 +265,7 @@ def _edit(tree, *pairs: tuple[str, str]) -> None:
 def test_vergence_may_run_at_twice_the_pan_speed(tree, vergence, refused):
     """Each eye turns by half the vergence. With 4000 rpm eye motors a pan turns at most 558 deg/s through its
     43:1 gearhead, so vergence reaches 1116 deg/s (the wire takes up to 1339 deg/s of vergence)."""
-    _edit(tree, ("no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}"),
+    _edit(tree, ("no_load_speed_rpm: 12800,", "no_load_speed_rpm: 4000,"),
           ("kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
            "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
           ("kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 400,",

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Keep the generated tables in docs/fabricate.md equal to the package (python -m robogene_head.docs_sync).
 
-The doc holds copies of the BOM, mass and drive-limit tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
+The doc holds copies of the BOM, mass, drive-limit and drive-sizing tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
 --check (used by the tests) fails when they differ from build/fab, --update rewrites them."""
 from __future__ import annotations
 
@@ -41,10 +41,22 @@ def drive_table(joints: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def sizing_table(sizing: dict) -> str:
+    rows = ["| joint | worst case | gravity (N m) | inertia (kg m²) | acceleration (deg/s²) | load (N m) | rotor (N m) | "
+            "motor capacity (N m) | gearhead capacity (N m) | margin | set by |",
+            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for j in sizing["joints"]:
+        rows.append(f"| {j['joint']} | {j['case']} | {j['gravity_Nm']:.3f} | {j['inertia_kgm2']:.5f} | "
+                    f"{j['accel_deg_s2']:.0f} | {j['load_Nm']:.3f} | {j['rotor_Nm']:.3f} | {j['motor_capacity_Nm']:.3f} | "
+                    f"{j['gearhead_capacity_Nm']:.3f} | {j['margin']:.2f} | {j['limited_by']} |")
+    return "\n".join(rows) + "\n"
+
+
 def blocks(fab: Path) -> dict[str, str]:
     return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
             "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text())),
-            "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text()))}
+            "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text())),
+            "SIZING": sizing_table(json.loads((fab / "reports" / "drive-sizing.json").read_text()))}
 
 
 def sync(doc_text: str, wanted: dict[str, str]) -> str:

@@ -25,6 +25,7 @@ PURCHASED_KINDS = {
     "bearing": ("bore", "outside", "width", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
+    "pin": ("diameter", "length", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
     "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),
 }
