@@ -231,7 +231,7 @@ def test_speed_limit_beyond_the_wire(tree):
                          "integral_limit: 300, max_velocity: 2000, current_limit: 620}")
     assert len(errs) == 2 and errs[0].startswith(
         f"{_at(text, 'max_velocity: 2000', skip=14)}: error: motor_control.joints.eyes_tilt.max_velocity: 2000 deg/s "
-        "is 3666895 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
+        "is 1118273 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
     assert "2000 deg/s is faster than the drive can turn the joint" in errs[1]   # test_speed_limit_beyond_the_drive
 
 
@@ -297,7 +297,7 @@ def test_a_parameter_change_travels_to_every_output(tree):
                                              "yaw: {motor_teeth: 14, joint_teeth: 40}"))
     outputs = render(tree)
     ini = outputs["drivers/can/config/head.ini"]
-    assert f"gear_ratio 66 66 {66 * 40 / 14!r} " in ini
+    assert f"gear_ratio 66 246 {66 * 40 / 14!r} " in ini
     header = outputs["hardware/electronics/firmware/robogene_head_board_config.h"]
     assert f"{4 * 512 * 66 * 40 / 14 / 360!r}f" in header
     assert render(tree) == outputs  # byte-identical across runs

@@ -59,9 +59,9 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_pitch", -11264, 8260, 56320, 2000,
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u},
-     {"neck_roll", -7509, 7509, 56320, 2000,
+     {"neck_roll", -27989, 27989, 209920, 2000,
       170, 1, 1700, 8u, 0, 900, 300,
-      375.46666666666664f, 512u, 14u}
+      1399.4666666666667f, 512u, 14u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
    {{1, 0}, {0, 1}},
@@ -70,9 +70,9 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_yaw", -43447, 43447, 193097, 1200,
       66, 1, 660, 8u, 0, 900, 300,
       965.4857142857144f, 512u, 14u},
-     {"eyes_tilt", -55003, 55003, 275017, 620,
+     {"eyes_tilt", -16774, 16774, 83870, 620,
       35, 1, 350, 8u, 0, 900, 300,
-      1833.447619047619f, 512u, 14u}
+      559.1365079365079f, 512u, 14u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
    {{1, 1}, {1, -1}},

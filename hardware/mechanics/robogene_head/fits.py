@@ -77,8 +77,9 @@ class Fit:
     coaxial: float       # mm, cylindrical zone for the pair on one part (0: a single seat)
 
     def text(self) -> str:
-        def dev(v):
-            return "0" if abs(v) < 5e-7 else f"{v:+.3f}"
+        def dev(v):   # in mm to the micrometre, half micrometres where js gives them
+            text = f"{v:+.4f}"
+            return "0" if abs(v) < 5e-7 else (text[:-1] if text.endswith("0") else text)
         what = "bearing seat" if self.role == "housing" else "bearing journal"
         count = f"{self.count}x " if self.count > 1 else ""
         head = f"{count}⌀{self.diameter:g} {self.tolerance} ({dev(self.upper)}/{dev(self.lower)}) {what}s" \

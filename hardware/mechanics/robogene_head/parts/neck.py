@@ -55,7 +55,8 @@ def _base(params: HeadParameters) -> list[Part]:
     # Left upright in its design frame; the right one is the same part turned half a turn about z.
     y_face = gap / 2 + ut
     upright = geom.cut(geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height),
-                       geom.cyl("y", 8, gap / 2 - 1, y_face + 1, (0, hp)),
+                       geom.cyl("y", bearing.num("bore") + 2 * up.num("shaft_clearance", positive=True),
+                                gap / 2 - 1, y_face + 1, (0, hp)),
                        geom.cyl("y", bo, y_face - bw, y_face + 1, (0, hp)),
                        *[geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)],
                        *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
