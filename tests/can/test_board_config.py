@@ -221,9 +221,9 @@ def test_unknown_joint_on_an_axis(tree):
 
 
 def test_missing_value(tree):
-    errs, text = _errors(tree, "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
-                         "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300,")
-    assert errs == [f"{_at(text, '{kp: 35,')}: error: motor_control.joints.eyes_tilt.max_velocity: missing"]
+    errs, text = _errors(tree, "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+                         "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300,")
+    assert errs == [f"{_at(text, '{kp: 114,')}: error: motor_control.joints.eyes_tilt.max_velocity: missing"]
 
 
 def test_speed_limit_beyond_the_wire(tree):
@@ -266,8 +266,8 @@ def test_vergence_may_run_at_twice_the_pan_speed(tree, vergence, refused):
     """Each eye turns by half the vergence. With 4000 rpm eye motors a pan turns at most 558 deg/s through its
     43:1 gearhead, so vergence reaches 1116 deg/s (the wire takes up to 1339 deg/s of vergence)."""
     _edit(tree, ("no_load_speed_rpm: 12800,", "no_load_speed_rpm: 4000,"),
-          ("kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
-           "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
+          ("kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+           "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
           ("kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 400,",
            f"kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: {vergence},"))
     if not refused:

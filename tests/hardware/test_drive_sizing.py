@@ -17,6 +17,9 @@ from robogene_head.kinematics import rotation
 from robogene_head.pose_search import GRAVITY, Chain
 from robogene_head.progress import Progress
 
+# A sizing searches the whole range of every joint: seconds on an idle 2-core machine, minutes on a shared one.
+HEAVY = pytest.mark.timeout(900)
+
 
 def _copy(tmp_path, edit):
     data = yaml.safe_load(DEFAULT_PATH.read_text())
@@ -30,6 +33,7 @@ def _point(mass, at):
     return MassProps(mass, np.array(at, dtype=float), np.zeros((3, 3)))
 
 
+@HEAVY
 def test_a_point_mass_above_the_neck_gives_the_closed_form_worst_case(params):
     """A 1 kg point h above the yaw joint: about pitch, gravity is largest at the pitch limit furthest from upright
     (roll at zero), m g d sin(30 deg), d the height above the pitch axis; its inertia about pitch is m d^2 at zero
@@ -50,6 +54,7 @@ def test_a_point_mass_above_the_neck_gives_the_closed_form_worst_case(params):
     assert worst["neck_yaw"][1].value == pytest.approx(0, abs=1e-12)
 
 
+@HEAVY
 def test_an_offset_mass_loads_yaw_only_when_the_neck_leans(params):
     """A point r in front of the yaw axis: no torque about yaw while the neck stands upright, some when it leans.
     Brute force on its own: the point's torque about the leaning yaw axis, a . (d x m g), over a fine grid of pitch,
@@ -77,6 +82,7 @@ def link_props(params, assembly):
     return massprops.link_props(params, assembly.parts)
 
 
+@HEAVY
 def test_the_package_table_is_the_check_of_the_cad(fab, params, link_props):
     report = json.loads((fab / "reports" / "drive-sizing.json").read_text())
     again = drive_sizing.report_json(drive_sizing.size(params, link_props))
@@ -90,6 +96,7 @@ def test_the_package_table_is_the_check_of_the_cad(fab, params, link_props):
     assert all(j["joint"] in text for j in report["joints"]) and "TOO SMALL" not in text
 
 
+@HEAVY
 def test_capacities_are_the_urdf_efforts(params, link_props):
     """The same catalogue data set the URDF's effort limits: the smaller capacity is the effort."""
     limits = drive_limits.limits(params)
@@ -97,6 +104,7 @@ def test_capacities_are_the_urdf_efforts(params, link_props):
         assert min(row.motor_capacity_Nm, row.gearhead_capacity_Nm) == pytest.approx(limits[row.joint].effort, rel=1e-9)
 
 
+@HEAVY
 def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
     heavier = load(_copy(tmp_path, lambda d: d["drive_sizing"]["payloads"][0].update(mass=1.2)))
     base = {j.joint: j for j in drive_sizing.size(params, link_props).joints}
@@ -105,6 +113,7 @@ def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
     assert more["neck_pitch"].case == "loaded"
 
 
+@HEAVY
 @pytest.mark.parametrize("edit, joint, limited", [
     (lambda d: d["purchased"][d["drives"]["neck_pitch"]["motor"]].update(continuous_torque_mNm=2), "neck_pitch", "motor"),
     (lambda d: d["purchased"][d["drives"]["neck_roll"]["gearhead"]].update(continuous_torque_Nm=0.05), "neck_roll", "gearhead"),
@@ -122,6 +131,7 @@ def test_an_undersized_drive_is_refused_with_the_table(params, link_props, tmp_p
     assert all(name in message for name in params.joints)
 
 
+@pytest.mark.timeout(1800)
 def test_the_build_stops_on_an_undersized_drive(fab, params, tmp_path):
     """The whole build, from a copy of the package's caches, with a pitch motor a fifth as strong."""
     out = tmp_path / "fab"
@@ -135,6 +145,7 @@ def test_the_build_stops_on_an_undersized_drive(fab, params, tmp_path):
     assert "neck_pitch" in table and "TOO SMALL" in table
 
 
+@HEAVY
 @pytest.mark.parametrize("edit, message", [
     (lambda d: d["drive_sizing"].update(margin=0.5), r"drive_sizing\.margin: must be >= 1\.0, got 0\.5"),
     (lambda d: d["drive_sizing"]["accelerations"].pop("eyes_tilt"), r"drive_sizing\.accelerations\.eyes_tilt: missing"),

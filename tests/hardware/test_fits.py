@@ -35,6 +35,7 @@ def found(params, assembly):
     return fits.find(params, assembly.parts)
 
 
+@pytest.mark.timeout(900)
 def test_every_bearing_has_its_seat_and_journal(params, assembly, found):
     """Each bearing of the assembly is held by one housing seat and one journal, with the fit its ring needs."""
     roles = {(f.design, f.role, f.tolerance, f.count) for fs in found.values() for f in fs}
@@ -52,6 +53,7 @@ def test_every_bearing_has_its_seat_and_journal(params, assembly, found):
             assert (f.coaxial > 0) == (f.count == 2)
 
 
+@pytest.mark.timeout(900)
 def test_the_fit_choice_comes_from_the_parameters(params, assembly, tmp_path):
     data = yaml.safe_load(DEFAULT_PATH.read_text())
     data["fits"]["journal_turning_ring"] = "js6"
@@ -69,6 +71,7 @@ def _flat(text: str) -> str:
     return re.sub(r"\s+", " ", text)
 
 
+@pytest.mark.timeout(900)
 def test_the_drawings_print_the_fits(fab, found):
     """Every fitted part's drawing carries its fits line, on the PDF and on the SVG, and the package's report
     lists the same fits the assembly has."""

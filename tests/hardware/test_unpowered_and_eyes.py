@@ -28,6 +28,7 @@ def _copy(tmp_path, edit):
     return path
 
 
+@pytest.mark.timeout(600)
 def test_a_mass_above_the_neck_falls_and_one_below_the_tilt_axis_settles(params, tmp_path):
     """No payload: a point 1 mm in front of the head frame's axis and 60 mm up topples pitch forward (to the
     limit it leans towards: positive pitch raises the front, so down is negative), while a point hanging under
@@ -85,6 +86,7 @@ def _distance(a, b) -> float:
     return d.Value()
 
 
+@pytest.mark.timeout(900)
 @pytest.mark.parametrize("joint, side", [("left_eye_pan", 1), ("left_eye_pan", 0), ("right_eye_pan", 0)])
 def test_the_lug_strikes_its_pin_at_the_stop(params, assembly, joint, side):
     """At the stop angle the lug touches the pin; half a degree short it is clear, two degrees past it they
@@ -105,6 +107,7 @@ def test_the_lug_strikes_its_pin_at_the_stop(params, assembly, joint, side):
     assert _distance(*shapes(limit)) >= params.geometry("clearances").num("minimum")
 
 
+@pytest.mark.timeout(900)
 def test_stops_inside_the_range_are_refused(params, external, tmp_path):
     from robogene_head.parts import build_all
     path = _copy(tmp_path, lambda d: d["homing"]["left_eye_pan"].update(stops_deg=[-56.5, 50]))

@@ -60,7 +60,7 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u},
      {"neck_roll", -27989, 27989, 209920, 2000,
-      170, 1, 1700, 8u, 0, 900, 300,
+      46, 1, 460, 8u, 0, 900, 300,
       1399.4666666666667f, 512u, 14u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
@@ -71,7 +71,7 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       66, 1, 660, 8u, 0, 900, 300,
       965.4857142857144f, 512u, 14u},
      {"eyes_tilt", -16774, 16774, 83870, 620,
-      35, 1, 350, 8u, 0, 900, 300,
+      114, 1, 1140, 8u, 0, 900, 300,
       559.1365079365079f, 512u, 14u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,

@@ -119,19 +119,23 @@ def _rotor_inertia(params: HeadParameters, joint: str) -> float:
 
 
 def size(params: HeadParameters, props: dict[str, MassProps]) -> SizingReport:
-    cases = {"bare": Chain(params, props).worst(), "loaded": Chain(params, with_payloads(params, props)).worst()}
-    rows = []
-    for joint in CHAIN_JOINTS:
+    required = required_margin(params)
+    drives = {}
+    for joint in CHAIN_JOINTS:   # every number read (and refused by its key) before the search
         drive = params.drive(joint)
         motor, gear = params.purchased(drive.text("motor")), params.purchased(drive.text("gearhead"))
         eta = gear.num("efficiency", positive=True, maximum=1.0)
-        belt = drive_limits.belt_ratio(params, joint)
         n = drive_limits.reduction(params, joint)
         accel_deg = acceleration(params, joint)
         alpha = math.radians(accel_deg)
-        motor_cap = motor.num("continuous_torque_mNm", positive=True) * 1e-3 * n * eta
-        gear_cap = gear.num("continuous_torque_Nm", positive=True) * belt
-        rotor = _rotor_inertia(params, joint) * n * n * eta * alpha
+        drives[joint] = (accel_deg, alpha, motor.num("continuous_torque_mNm", positive=True) * 1e-3 * n * eta,
+                         gear.num("continuous_torque_Nm", positive=True) * drive_limits.belt_ratio(params, joint),
+                         _rotor_inertia(params, joint) * n * n * eta * alpha)
+    loaded = with_payloads(params, props)
+    cases = {"bare": Chain(params, props).worst(), "loaded": Chain(params, loaded).worst()}
+    rows = []
+    for joint in CHAIN_JOINTS:
+        accel_deg, alpha, motor_cap, gear_cap, rotor = drives[joint]
         worst_row = None
         for case, found in cases.items():
             gravity, inertia = found[joint]
@@ -141,7 +145,7 @@ def size(params: HeadParameters, props: dict[str, MassProps]) -> SizingReport:
             if worst_row is None or row.margin < worst_row.margin:
                 worst_row = row
         rows.append(worst_row)
-    return SizingReport(required_margin(params), rows)
+    return SizingReport(required, rows)
 
 
 def format_table(report: SizingReport) -> str:
