@@ -83,6 +83,7 @@ def test_three_boards_match_the_kicad_step(params, assembly, board_step):
     assert hi[2] > 5
 
 
+@pytest.mark.timeout(600)   # an interference check of the whole neck base: minutes on a shared machine
 def test_boards_sit_in_the_bay_without_interference(params, assembly):
     g = params.geometry("neck_base")
     plate_bottom = -g.node("plate").num("thickness")
@@ -95,6 +96,7 @@ def test_boards_sit_in_the_bay_without_interference(params, assembly):
         assert flange_top < bb.zmin and bb.zmax < plate_bottom, part.name
 
 
+@pytest.mark.timeout(600)   # an interference check of the whole neck base: minutes on a shared machine
 def test_a_board_pushed_into_the_plate_is_caught(params, external, tmp_path):
     data = yaml.safe_load(params.path.read_text())
     # 20 mm standoffs between the boards: the top board now reaches through the base plate
