@@ -182,16 +182,44 @@ int main(void) {
     assert rows["eyes_version"][0] == 1 and rows["neck_pitch"][0] == 0
 
 
+LEFT_STOPS = "left_eye_pan:  {method: hard_stop, direction: 1, stops_deg: [-56.5, 56.5], back_off_deg: 28.5}"
+RIGHT_STOPS = "right_eye_pan: {method: hard_stop, direction: 1, stops_deg: [-56.5, 56.5], back_off_deg: 28.5}"
+TUNING = "eyes_version:  {speed: 10, pwm: 250, timeout: 20}"
+
+
+def test_homing_stops_come_from_the_physical_joints(tree):
+    """The board's homing of version and vergence follows the eye pans' stops (top-level homing:): version reads
+    the mean of the two stops, vergence their difference (left - right), and the back-off is the pans'."""
+    _edit(tree, (LEFT_STOPS, LEFT_STOPS.replace("56.5]", "58]").replace("28.5", "29")),
+          (RIGHT_STOPS, RIGHT_STOPS.replace("56.5]", "57]").replace("28.5", "29")))
+    joints = {j.joint: j for j in _compile(tree).board_configs[0].joints}
+    version, vergence = joints["eyes_version"].homing, joints["eyes_vergence"].homing
+    assert (version.direction, version.stop_deg, version.backoff_deg) == (1, 57.5, 29)
+    assert (version.speed, version.pwm, version.timeout_s) == (10, 250, 20)
+    assert (vergence.direction, vergence.stop_deg) == (0, 1)
+    assert joints["neck_pitch"].homing is None
+
+
 def test_homing_stop_inside_the_joint_range(tree):
-    errs, text = _errors(tree, "eyes_version:  {direction: 1, stop: 55,", "eyes_version:  {direction: 1, stop: 25,")
-    assert f"{_at(text, 'stop: 25', skip=6)}: error: motor_control.homing.eyes_version.stop: the upper stop at 25 deg " \
-           "is inside the joint's range -30..30" in errs
+    _edit(tree, (RIGHT_STOPS, RIGHT_STOPS.replace("56.5]", "25]")))
+    errs, text = _errors(tree, LEFT_STOPS, LEFT_STOPS.replace("56.5]", "25]"))
+    assert f"{_at(text, '[-56.5, 25]')}: error: homing.left_eye_pan.stops_deg: eyes_version reads 25 deg against " \
+           "the upper stops, inside its range -30..30" in errs
 
 
 def test_homing_backoff_that_ends_outside_the_range(tree):
-    errs, text = _errors(tree, "backoff: 27.5,", "backoff: 20,")
-    assert errs == [f"{_at(text, 'backoff: 20', skip=9)}: error: motor_control.homing.eyes_version.backoff: backing off "
-                    "20 deg from the stop at 55 deg ends at 35 deg, outside the joint's range -30..30"]
+    _edit(tree, (RIGHT_STOPS, RIGHT_STOPS.replace("28.5", "20")))
+    errs, text = _errors(tree, LEFT_STOPS, LEFT_STOPS.replace("28.5", "20"))
+    assert errs == [f"{_at(text, 'back_off_deg: 20', skip=14)}: error: homing.left_eye_pan.back_off_deg: backing "
+                    "eyes_version off 20 deg from the stops at 56.5 deg ends at 36.5 deg, outside its range -30..30"]
+
+
+def test_the_eyes_home_together(tree):
+    """Version runs both pans against their stops at once: they must head for the same side and back off alike."""
+    errs, text = _errors(tree, RIGHT_STOPS, RIGHT_STOPS.replace("direction: 1", "direction: -1"))
+    assert any(e.startswith(f"{_at(text, 'direction: -1', skip=11)}: error: homing.right_eye_pan.direction: differs "
+                            "from homing.left_eye_pan.direction: eyes_version runs left_eye_pan and right_eye_pan "
+                            "against their stops together") for e in errs), errs
 
 
 def test_homing_pwm_above_the_output_limit(tree):
@@ -200,17 +228,32 @@ def test_homing_pwm_above_the_output_limit(tree):
                     "1..output_limit (900)"]
 
 
+def test_the_firmware_tuning_gives_no_stop_of_its_own(tree):
+    """The stop angle has one source: a stop under motor_control.homing is refused, naming where it belongs."""
+    errs, text = _errors(tree, TUNING, TUNING.replace("{speed", "{stop: 55, speed"))
+    assert errs == [f"{_at(text, 'stop: 55', skip=6)}: error: motor_control.homing.eyes_version.stop: unknown key (allowed: "
+                    "speed, pwm, timeout; the stops, the side and the back-off come from the top-level "
+                    "homing.<joint> of its motors)"]
+
+
 def test_vergence_cannot_home_on_its_own(tree):
-    errs, _ = _errors(tree, "eyes_vergence: {stop: 0}",
-                      "eyes_vergence: {stop: 0, direction: -1, speed: 10, pwm: 100, backoff: 0, timeout: 5}")
-    assert any(e.endswith("motor_control.homing.eyes_vergence.direction: vergence is found when version homes both "
-                          "eyes against their stops: give it only 'stop'") for e in errs), errs
+    errs, _ = _errors(tree, TUNING + "\n", TUNING + "\n    eyes_vergence: {speed: 10, pwm: 100, timeout: 5}\n")
+    assert any(e.endswith("motor_control.homing.eyes_vergence: vergence is found when version homes both eyes "
+                          "against their stops: it takes no homing entry") for e in errs), errs
 
 
-def test_version_homing_needs_the_vergence_at_the_stops(tree):
-    errs, _ = _errors(tree, "    eyes_vergence: {stop: 0}\n", "")
-    assert any(e.endswith("motor_control.homing: eyes_version homes the eye motors: eyes_vergence needs 'stop', the "
-                          "vergence when both eyes are against their stops") for e in errs), errs
+def test_a_hard_stop_joint_needs_the_boards_tuning(tree):
+    errs, text = _errors(tree, "  homing:\n    " + TUNING + "\n", "")
+    assert f"{_at(text, LEFT_STOPS, skip=len('left_eye_pan:  {method: '))}: error: homing.left_eye_pan.method: " \
+           "left_eye_pan homes against a hard stop, but motor_control.homing.eyes_version gives no speed, pwm and " \
+           "timeout for the board's homing run" in errs, errs
+
+
+def test_an_absolute_encoder_joint_needs_its_encoder(tree):
+    errs, text = _errors(tree, LEFT_STOPS, "left_eye_pan:  {method: absolute_encoder}")
+    at = _at(text, "left_eye_pan:  {method: absolute_encoder}", skip=len("left_eye_pan:  {method: "))
+    assert f"{at}: error: homing.left_eye_pan.method: left_eye_pan has no " \
+           "joint encoder (drives.left_eye_pan.joint_encoder)" in errs, errs
 
 
 # ---- a wrong parameter file is refused, naming the field --------------------------------------
@@ -283,9 +326,9 @@ def test_unknown_joint_on_an_axis(tree):
 
 
 def test_missing_value(tree):
-    errs, text = _errors(tree, "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
-                         "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300,")
-    assert errs == [f"{_at(text, '{kp: 35,')}: error: motor_control.joints.eyes_tilt.max_velocity: missing"]
+    errs, text = _errors(tree, "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+                         "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300,")
+    assert errs == [f"{_at(text, '{kp: 114,')}: error: motor_control.joints.eyes_tilt.max_velocity: missing"]
 
 
 def test_speed_limit_beyond_the_wire(tree):
@@ -293,7 +336,7 @@ def test_speed_limit_beyond_the_wire(tree):
                          "integral_limit: 300, max_velocity: 2000, current_limit: 620}")
     assert len(errs) == 2 and errs[0].startswith(
         f"{_at(text, 'max_velocity: 2000', skip=14)}: error: motor_control.joints.eyes_tilt.max_velocity: 2000 deg/s "
-        "is 3666895 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
+        "is 1118273 count/s, which does not fit set_max_velocity.speed (int16: -327680..327670 count/s)")
     assert "2000 deg/s is faster than the drive can turn the joint" in errs[1]   # test_speed_limit_beyond_the_drive
 
 
@@ -307,10 +350,10 @@ def test_speed_limit_beyond_the_drive(tree):
 
 
 def test_slower_motor_lowers_the_speed_limit(tree):
-    """The check follows the motor's catalogue speed: at 4000 rpm the 1717 tilt drive reaches 74.5 deg/s."""
-    errs, _ = _errors(tree, "no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}")
+    """The check follows the motor's catalogue speed: at 2000 rpm the 1724 tilt drive reaches 122.1 deg/s."""
+    errs, _ = _errors(tree, "no_load_speed_rpm: 8200,", "no_load_speed_rpm: 2000,")
     assert any(e.endswith("motor_control.joints.eyes_tilt.max_velocity: 150 deg/s is faster than the drive can turn "
-                          "the joint: 74.47 deg/s (faulhaber-1717T012SR at its no-load speed through the 322.3:1 "
+                          "the joint: 122.1 deg/s (faulhaber-1724T012SR at its no-load speed through the 98.29:1 "
                           "reduction)") for e in errs), errs
 
 
@@ -327,9 +370,9 @@ def _edit(tree, *pairs: tuple[str, str]) -> None:
 def test_vergence_may_run_at_twice_the_pan_speed(tree, vergence, refused):
     """Each eye turns by half the vergence. With 4000 rpm eye motors a pan turns at most 558 deg/s through its
     43:1 gearhead, so vergence reaches 1116 deg/s (the wire takes up to 1339 deg/s of vergence)."""
-    _edit(tree, ("no_load_speed_rpm: 12800}", "no_load_speed_rpm: 4000}"),
-          ("kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
-           "kd: 350,  shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
+    _edit(tree, ("no_load_speed_rpm: 12800,", "no_load_speed_rpm: 4000,"),
+          ("kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 150,",
+           "kd: 1140, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 50,"),
           ("kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: 400,",
            f"kd: 2600, shift: 8, offset: 0, output_limit: 900, integral_limit: 300, max_velocity: {vergence},"))
     if not refused:
@@ -359,7 +402,7 @@ def test_a_parameter_change_travels_to_every_output(tree):
                                              "yaw: {motor_teeth: 14, joint_teeth: 40}"))
     outputs = render(tree)
     ini = outputs["drivers/can/config/head.ini"]
-    assert f"gear_ratio 66 66 {66 * 40 / 14!r} " in ini
+    assert f"gear_ratio 66 246 {66 * 40 / 14!r} " in ini
     header = outputs["hardware/electronics/firmware/robogene_head_board_config.h"]
     assert f"{4 * 512 * 66 * 40 / 14 / 360!r}f" in header
     assert render(tree) == outputs  # byte-identical across runs

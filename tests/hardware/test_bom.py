@@ -60,10 +60,10 @@ def test_costs_follow_the_price_breaks(params, assembly, cat):
 
 def test_missing_catalog_part_is_named(params, assembly, tmp_path):
     data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
-    del data["parts"]["skf-626-2Z"]
+    del data["parts"]["skf-61800-2RS"]
     path = tmp_path / "catalog.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(catalog.CatalogError, match=r"no entry for 'skf-626-2Z' \(needed by CAD part neck_pitch_bearing_right\)"):
+    with pytest.raises(catalog.CatalogError, match=r"no entry for 'skf-61800-2RS' \(needed by CAD part neck_pitch_bearing_right\)"):
         collect.collect(assembly.parts, mounts.belts(params), [], catalog.load(path))
 
 

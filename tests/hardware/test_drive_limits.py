@@ -53,9 +53,10 @@ def test_package_urdf_limits_follow_the_drives(fab):
 
 def test_a_weaker_motor_lowers_its_joints_effort(params, tmp_path):
     before = urdf_limits(urdf.generate(params, {}))
+    motor = params.drive("neck_pitch").text("motor")
 
     def halve(data):
-        data["purchased"]["faulhaber-2342S012CR"]["continuous_torque_mNm"] /= 2
+        data["purchased"][motor]["continuous_torque_mNm"] /= 2
     after = urdf_limits(urdf.generate(load(_copy(tmp_path, halve)), {}))
     assert after["neck_pitch"][0] == pytest.approx(before["neck_pitch"][0] / 2, rel=1e-8)
     assert after["neck_pitch"][1] == before["neck_pitch"][1]
@@ -64,13 +65,13 @@ def test_a_weaker_motor_lowers_its_joints_effort(params, tmp_path):
 
 
 def test_the_gearhead_rating_caps_the_torque_before_the_belt(tmp_path):
-    """The 22/7 drives neck_roll directly and neck_yaw through the 36/14 belt: its rating caps the torque on
-    its own shaft, which the belt then multiplies."""
+    """The 16/7 43:1 drives the eye pans directly and the eye tilt through the 32/14 belt: its rating caps the
+    torque on its own shaft, which the belt then multiplies."""
     def derate(data):
-        data["purchased"]["faulhaber-22-7-66"]["continuous_torque_Nm"] = 0.2
+        data["purchased"]["faulhaber-16-7-43"]["continuous_torque_Nm"] = 0.02
     limits = drive_limits.limits(load(_copy(tmp_path, derate)))
-    assert (limits["neck_roll"].effort, limits["neck_roll"].limited_by) == (pytest.approx(0.2), "gearhead")
-    assert (limits["neck_yaw"].effort, limits["neck_yaw"].limited_by) == (pytest.approx(0.2 * 36 / 14), "gearhead")
+    assert (limits["left_eye_pan"].effort, limits["left_eye_pan"].limited_by) == (pytest.approx(0.02), "gearhead")
+    assert (limits["eyes_tilt"].effort, limits["eyes_tilt"].limited_by) == (pytest.approx(0.02 * 32 / 14), "gearhead")
 
 
 def test_belt_pull_is_the_gearhead_torque_on_the_motor_pulley(params):
@@ -90,7 +91,7 @@ def test_belt_pull_is_the_gearhead_torque_on_the_motor_pulley(params):
     ("faulhaber-2224U012SR", "continuous_torque_mNm", -3, "continuous_torque_mNm: must be > 0, got -3"),
     ("faulhaber-16-7-43", "efficiency", 1.2, "efficiency: must be <= 1, got 1.2"),
     ("faulhaber-16-7-43", "efficiency", 0, "efficiency: must be > 0, got 0"),
-    ("faulhaber-23-1-66", "continuous_torque_Nm", None, "continuous_torque_Nm: missing"),
+    ("faulhaber-32-3-66", "continuous_torque_Nm", None, "continuous_torque_Nm: missing"),
 ])
 def test_bad_drive_data_is_named(tmp_path, part, field, value, message):
     def edit(data):

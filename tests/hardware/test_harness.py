@@ -173,6 +173,19 @@ def test_bad_harness_entries_are_named(params, parts, tmp_path):
         plan.plan(p3, spec.load(p3), parts)
 
 
+def test_camera_cable_lengths_are_keyed_by_catalog_part(params, tmp_path):
+    """Keyed by name as every mapping of the parameter file (the board-config codegen reads the same file and refuses
+    number keys); the old layout, length -> part, is refused naming the field."""
+    assert spec.load(params).camera_lengths == {200.0: "rpi-camera-cable-200", 300.0: "rpi-camera-cable-300",
+                                                500.0: "rpi-camera-cable-500"}
+
+    def number_keys(data):
+        data["harness"]["camera_cables"]["lengths"] = {200: "rpi-camera-cable-200"}
+    with pytest.raises(params_mod.ParameterError, match=r"harness\.camera_cables\.lengths: expected a mapping of "
+                                                         r"catalog keys to their positive lengths \(mm\)"):
+        spec.load(_variant(params, tmp_path, number_keys))
+
+
 def test_wireviz_draws_every_cable(params, parts, tmp_path):
     from robogene_bom import catalog
     s = dataclasses.replace(spec.load(params), sweep_samples=3)

@@ -30,14 +30,19 @@ PID_FIELDS = {"kp": ("set_position_pid", "kp"), "ki": ("set_position_pid", "ki")
               "output_limit": ("set_position_pid_limits", "output_limit"),
               "integral_limit": ("set_position_pid_limits", "integral_limit")}
 JOINT_KEYS = tuple(PID_FIELDS) + ("max_velocity", "current_limit")
-HOMING_KEYS = ("direction", "stop", "speed", "pwm", "backoff", "timeout")
+# motor_control.homing.<control joint>: only the firmware's tuning of its homing run.
+HOMING_KEYS = ("speed", "pwm", "timeout")
+# homing.<physical joint> (top level): how the joint finds its zero, the one source of its hard stops.
+STOP_KEYS = ("method", "direction", "stops_deg", "back_off_deg")
+HOMING_METHODS = ("absolute_encoder", "hard_stop")
 
 
 @dataclass
 class Homing:
-    """Homing against a hard stop (motor_control.homing.<joint>). direction 0: the joint does not home
-    itself; on the eye board vergence is found when version homes both eyes against their stops, and
-    `stop` is the vergence read there."""
+    """Homing of a control joint against hard stops: the stops, side and back-off derived from the top-level
+    homing.<physical joint> of its motors, the run's tuning from motor_control.homing.<joint>. direction 0: the
+    joint does not home itself; on the eye board vergence is found when version homes both eyes against their
+    stops, and `stop` is the vergence read there."""
     direction: int              # +1 towards the upper stop, -1 the lower, 0 none
     stop_deg: float             # the joint's angle pressed against the stop
     speed: float = 0.0          # deg/s
@@ -233,6 +238,7 @@ class _Reader:
 
     def __init__(self, checker: BoardConfigChecker, pdoc: Document, proto: CanProtocol, mech: dict):
         self.checker, self.pdoc, self.proto, self.mech = checker, pdoc, proto, mech
+        self.stops: dict[str, tuple[int, float, float]] = {}
 
     def fail(self, path: tuple, message: str) -> None:
         self.checker.errors.append(IdlError(self.pdoc.mark(path), f"{_dotted(path)}: {message}"))
@@ -358,34 +364,92 @@ class _Reader:
             axes[name] = axis
         return axes
 
-    def _homing(self, mc: tuple, axes: dict[str, AxisConfig]) -> None:
-        """motor_control.homing (optional): per joint, how it finds its hard stop."""
-        if "homing" not in self.pdoc.data["motor_control"]:
-            return
-        node = self.get(mc + ("homing",), dict, "a mapping of control joints")
+    def _stops(self) -> dict[str, tuple[int, float, float]]:
+        """homing.<physical joint> (top level): (direction, the stop's angle on that side, back-off) of each joint
+        that homes against a hard stop; a joint read by an absolute encoder must have one."""
+        if "homing" not in self.pdoc.data:
+            return {}
+        node = self.get(("homing",), dict, "a mapping of physical joints")
+        chain = {j["name"]: j for j in self.mech["config"]["joints"]}
+        out = {}
         for name in node:
+            path = ("homing", name)
+            if name not in chain:
+                self.fail(path, f"unknown joint (the joints are {', '.join(chain)})")
+                continue
+            entry = self.get(path, dict, "a mapping")
+            for extra in sorted(set(entry) - set(STOP_KEYS)):
+                self.fail(path + (extra,), f"unknown key (allowed: {', '.join(STOP_KEYS)})")
+            method = self.get(path + ("method",), str, f"one of {', '.join(HOMING_METHODS)}")
+            if method not in HOMING_METHODS:
+                self.fail(path + ("method",), f"expected one of {', '.join(HOMING_METHODS)}, got {method!r}")
+                continue
+            if method == "absolute_encoder":
+                for extra in sorted(set(entry) - {"method"}):
+                    self.fail(path + (extra,), "a joint read by its absolute encoder takes only 'method'")
+                if not chain[name].get("joint_encoder"):
+                    self.fail(path + ("method",), f"{name} has no joint encoder (drives.{name}.joint_encoder)")
+                continue
+            direction = self.get(path + ("direction",), int, "1 (upper stop) or -1 (lower stop)")
+            stops = self.get(path + ("stops_deg",), list, "[lower, upper] (deg)")
+            if len(stops) != 2 or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in stops) \
+                    or not stops[0] < stops[1]:
+                self.fail(path + ("stops_deg",), f"expected [lower, upper] in degrees, lower < upper, got {stops!r}")
+                continue
+            back = float(self.get(path + ("back_off_deg",), float, "a number (deg)"))
+            if direction not in (1, -1):
+                self.fail(path + ("direction",), f"expected 1 (upper stop) or -1 (lower stop), got {direction}")
+                continue
+            if back <= 0:
+                self.fail(path + ("back_off_deg",), f"must be > 0, got {back:g}")
+            out[name] = (direction, float(stops[1] if direction == 1 else stops[0]), back)
+        return out
+
+    def _homing(self, mc: tuple, axes: dict[str, AxisConfig]) -> None:
+        """Each control joint whose motors home against hard stops: where the stops are, which way it runs and how
+        far it backs off from the top-level homing.<motor>; its run's tuning from motor_control.homing.<joint>."""
+        stops = self.stops = self._stops()
+        tuning = self.get(mc + ("homing",), dict, "a mapping of control joints") \
+            if "homing" in self.pdoc.data["motor_control"] else {}
+        coupled = {a.joint for a in axes.values() if len(a.motors) > 1}
+        for motor in stops:
+            runs = [a.joint for a in axes.values() if motor in a.motors and a.joint in tuning]
+            if not runs:
+                drivers = [a.joint for a in axes.values() if motor in a.motors and a.joint != "eyes_vergence"]
+                self.fail(("homing", motor, "method"), f"{motor} homes against a hard stop, but "
+                          f"motor_control.homing.{drivers[0] if drivers else motor} gives no speed, pwm and timeout "
+                          "for the board's homing run")
+        for name in tuning:
             path = mc + ("homing", name)
             if name not in axes:
                 self.fail(path, f"unknown joint (the control joints are {', '.join(axes)})")
                 continue
             entry = self.get(path, dict, "a mapping")
             for extra in sorted(set(entry) - set(HOMING_KEYS)):
-                self.fail(path + (extra,), f"unknown key (allowed: {', '.join(HOMING_KEYS)})")
+                self.fail(path + (extra,), f"unknown key (allowed: {', '.join(HOMING_KEYS)}; the stops, the side "
+                          "and the back-off come from the top-level homing.<joint> of its motors)")
             a = axes[name]
-            stop = float(self.get(path + ("stop",), float, "a number (deg)"))
-            self.fits(path + ("stop",), stop * a.counts_per_degree, "set_encoder_position", "position",
-                      f"{stop:g} deg")
-            if "direction" not in entry:
-                for key in sorted(set(entry) & set(HOMING_KEYS) - {"stop"}):
-                    self.fail(path + (key,), "a joint that does not home itself (no direction) takes only 'stop'")
-                if not a.min_deg <= stop <= a.max_deg:
-                    self.fail(path + ("stop",), f"{stop:g} deg is outside the joint's range "
-                              f"{a.min_deg:g}..{a.max_deg:g}, where its partner leaves it")
-                a.homing = Homing(0, stop)
+            if name == "eyes_vergence" and name in coupled:
+                self.fail(path, "vergence is found when version homes both eyes against their stops: it takes no "
+                          "homing entry")
                 continue
-            direction = self.get(path + ("direction",), int, "1 (upper stop) or -1 (lower stop)")
-            if direction not in (1, -1):
-                self.fail(path + ("direction",), f"expected 1 (upper stop) or -1 (lower stop), got {direction}")
+            missing = [m for m in a.motors if m not in stops]
+            if missing:
+                self.fail(path, f"its motors must home against hard stops: give homing.{missing[0]} the method "
+                          "hard_stop with its stops_deg, direction and back_off_deg")
+                continue
+            first = a.motors[0]
+            for m in a.motors[1:]:
+                for i, key in ((0, "direction"), (2, "back_off_deg")):
+                    if stops[m][i] != stops[first][i]:
+                        self.fail(("homing", m, key), f"differs from homing.{first}.{key}: {name} runs "
+                                  f"{' and '.join(a.motors)} against their stops together")
+            direction, back = stops[first][0], stops[first][2]
+            # the control joint's angle with every motor at its stop (version = (left + right) / 2)
+            stop = sum(stops[m][1] for m in a.motors) / len(a.motors)
+            source = ("homing", first, "stops_deg")
+            self.fits(source, stop * a.counts_per_degree, "set_encoder_position", "position",
+                      f"{name} at the stops, {stop:g} deg,")
             speed = float(self.get(path + ("speed",), float, "a number (deg/s)"))
             if not 0 < speed <= a.max_velocity:
                 self.fail(path + ("speed",), f"{speed:g} deg/s is outside 0..max_velocity ({a.max_velocity:g})")
@@ -393,37 +457,40 @@ class _Reader:
             pwm = self.get(path + ("pwm",), int, "an integer (PWM steps)")
             if not 0 < pwm <= a.pid["output_limit"]:
                 self.fail(path + ("pwm",), f"{pwm} is outside 1..output_limit ({a.pid['output_limit']})")
-            backoff = float(self.get(path + ("backoff",), float, "a number (deg)"))
             timeout = float(self.get(path + ("timeout",), float, "a number (s)"))
             if timeout <= 0:
                 self.fail(path + ("timeout",), f"must be > 0, got {timeout:g}")
             beyond = stop >= a.max_deg if direction == 1 else stop <= a.min_deg
-            if direction in (1, -1) and not beyond:
+            if not beyond:
                 side = "upper" if direction == 1 else "lower"
-                self.fail(path + ("stop",), f"the {side} stop at {stop:g} deg is inside the joint's range "
+                self.fail(source, f"{name} reads {stop:g} deg against the {side} stops, inside its range "
                           f"{a.min_deg:g}..{a.max_deg:g}")
-            rest = stop - direction * backoff
-            if backoff < 0 or not a.min_deg <= rest <= a.max_deg:
-                self.fail(path + ("backoff",), f"backing off {backoff:g} deg from the stop at {stop:g} deg ends at "
-                          f"{rest:g} deg, outside the joint's range {a.min_deg:g}..{a.max_deg:g}")
-            a.homing = Homing(direction, stop, speed, pwm, backoff, timeout)
+            rest = stop - direction * back
+            if not a.min_deg <= rest <= a.max_deg:
+                self.fail(("homing", first, "back_off_deg"), f"backing {name} off {back:g} deg from the stops at "
+                          f"{stop:g} deg ends at {rest:g} deg, outside its range {a.min_deg:g}..{a.max_deg:g}")
+            a.homing = Homing(direction, stop, speed, pwm, back, timeout)
 
     def _coupled_homing(self, mc: tuple, boards: list[Board]) -> None:
-        """On the eye board version homes both eyes against their stops, which fixes vergence too."""
+        """On the eye board version homes both eyes against their stops, which fixes vergence too: the vergence read
+        there follows from the two eyes' stops (vergence = left - right)."""
         for b in boards:
             if b.coupling != COUPLING_VERSION_VERGENCE:
                 continue
             version, vergence = b.axes
-            if vergence.homing and vergence.homing.direction:
-                self.fail(mc + ("homing", vergence.joint, "direction"), "vergence is found when version homes "
-                          "both eyes against their stops: give it only 'stop'")
-            homes = bool(version.homing and version.homing.direction)
-            if homes and not vergence.homing:
-                self.fail(mc + ("homing",), f"{version.joint} homes the eye motors: {vergence.joint} needs "
-                          "'stop', the vergence when both eyes are against their stops")
-            if vergence.homing and not homes:
-                self.fail(mc + ("homing", vergence.joint), f"found only when {version.joint} homes, which it "
-                          "does not (no direction)")
+            if not (version.homing and version.homing.direction):
+                continue
+            stops = self.stops
+            left, right = version.motors
+            if left not in stops or right not in stops:
+                continue
+            stop = stops[left][1] - stops[right][1]
+            self.fits(("homing", left, "stops_deg"), stop * vergence.counts_per_degree, "set_encoder_position",
+                      "position", f"{vergence.joint} at the stops, {stop:g} deg,")
+            if not vergence.min_deg <= stop <= vergence.max_deg:
+                self.fail(("homing", left, "stops_deg"), f"{vergence.joint} reads {stop:g} deg with both eyes at "
+                          f"their stops, outside its range {vergence.min_deg:g}..{vergence.max_deg:g}")
+            vergence.homing = Homing(0, stop)
 
     def _within_drive(self, path: tuple, name: str, max_velocity: float, motors: list[dict]) -> None:
         """A speed limit the drive cannot reach is a typo or a wrong part: the joint's top speed is its motors'

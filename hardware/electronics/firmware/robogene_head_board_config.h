@@ -42,7 +42,8 @@ typedef struct {
   uint8_t joint_encoder_bits;  // 0: no absolute joint encoder
   // Homing against a hard stop (calibrate_encoder hard_stop). direction +1 upper stop, -1 lower;
   // 0: the axis does not home itself (on the eye board vergence is found when version homes, and
-  // homing_stop is the vergence read there).
+  // homing_stop is the vergence read there). Direction, stop and backoff follow from the physical
+  // joints' stops (homing: of the parameter file), the rest is the board's tuning (motor_control.homing).
   int8_t homing_direction;
   int32_t homing_stop;         // counts at the stop
   int32_t homing_speed;        // counts/s
@@ -69,9 +70,9 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u,
       0, 0, 0, 0, 0, 0u},
-     {"neck_roll", -7509, 7509, 56320, 2000,
-      170, 1, 1700, 8u, 0, 900, 300,
-      375.46666666666664f, 512u, 14u,
+     {"neck_roll", -27989, 27989, 209920, 2000,
+      46, 1, 460, 8u, 0, 900, 300,
+      1399.4666666666667f, 512u, 14u,
       0, 0, 0, 0, 0, 0u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
@@ -82,9 +83,9 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       66, 1, 660, 8u, 0, 900, 300,
       965.4857142857144f, 512u, 14u,
       0, 0, 0, 0, 0, 0u},
-     {"eyes_tilt", -55003, 55003, 275017, 620,
-      35, 1, 350, 8u, 0, 900, 300,
-      1833.447619047619f, 512u, 14u,
+     {"eyes_tilt", -16774, 16774, 83870, 620,
+      114, 1, 1140, 8u, 0, 900, 300,
+      559.1365079365079f, 512u, 14u,
       0, 0, 0, 0, 0, 0u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
@@ -94,7 +95,7 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"eyes_version", -14677, 14677, 195698, 600,
       130, 1, 1300, 8u, 0, 900, 300,
       489.24444444444447f, 512u, 0u,
-      1, 26908, 4892, 250, 13454, 20000u},
+      1, 27642, 4892, 250, 13943, 20000u},
      {"eyes_vergence", 0, 11008, 97849, 600,
       260, 1, 2600, 8u, 0, 900, 300,
       244.62222222222223f, 512u, 0u,

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """Keep the generated tables in docs/fabricate.md equal to the package (python -m robogene_head.docs_sync).
 
-The doc holds copies of the BOM, mass and drive-limit tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
+The doc holds copies of the BOM, mass, drive-limit, drive-sizing, unpowered and eye-accuracy tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
 --check (used by the tests) fails when they differ from build/fab, --update rewrites them."""
 from __future__ import annotations
 
@@ -60,11 +60,45 @@ def harness_table(harness: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def sizing_table(sizing: dict) -> str:
+    rows = ["| joint | worst case | gravity (N m) | inertia (kg m²) | acceleration (deg/s²) | load (N m) | rotor (N m) | "
+            "motor capacity (N m) | gearhead capacity (N m) | margin | set by |",
+            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for j in sizing["joints"]:
+        rows.append(f"| {j['joint']} | {j['case']} | {j['gravity_Nm']:.3f} | {j['inertia_kgm2']:.5f} | "
+                    f"{j['accel_deg_s2']:.0f} | {j['load_Nm']:.3f} | {j['rotor_Nm']:.3f} | {j['motor_capacity_Nm']:.3f} | "
+                    f"{j['gearhead_capacity_Nm']:.3f} | {j['margin']:.2f} | {j['limited_by']} |")
+    return "\n".join(rows) + "\n"
+
+
+def unpowered_table(data: dict) -> str:
+    rows = ["| joint | released from rest | comes to rest at (deg) | gravity torque there (N m) | "
+            "holding element needed (N m) |", "|---|---|---:|---:|---:|"]
+    for r in data["joints"]:
+        what = {"falls": f"falls onto its stop ({r['case']})", "settles": f"settles, a pendulum ({r['case']})",
+                "balanced": "stays: gravity has no torque about it at rest"}[r["behaviour"]]
+        rows.append(f"| {r['joint']} | {what} | {r['end_deg']:.1f} | {r['torque_at_end_Nm']:.3f} | {r['hold_Nm']:.3f} |")
+    return "\n".join(rows) + "\n"
+
+
+def eyes_table(e: dict) -> str:
+    return "\n".join([
+        "| | allowed (budget) | the eye-pan drives |", "|---|---:|---:|",
+        f"| vergence error (deg) | {e['vergence_allowed_deg']:.3f} | {e['vergence_deg']:.3f} |",
+        f"| error per eye, version error (deg) | {e['per_eye_allowed_deg']:.3f} | {e['per_eye_deg']:.3f} |",
+        f"| depth error at {e['distance_mm']:g} mm (mm) | {e['depth_error_mm']:g} | {e['depth_mm']:.1f} |",
+        f"| of which backlash / one motor encoder count (deg per eye) | | {e['backlash_deg']:.3f} / "
+        f"{e['encoder_count_deg']:.4f} |"]) + "\n"
+
+
 def blocks(fab: Path) -> dict[str, str]:
     return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
             "HARNESS": harness_table(json.loads((fab / "harness" / "harness.json").read_text())),
             "MASS": mass_table(json.loads((fab / "reports" / "mass.json").read_text())),
-            "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text()))}
+            "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text())),
+            "SIZING": sizing_table(json.loads((fab / "reports" / "drive-sizing.json").read_text())),
+            "UNPOWERED": unpowered_table(json.loads((fab / "reports" / "unpowered.json").read_text())),
+            "EYES": eyes_table(json.loads((fab / "reports" / "eye-accuracy.json").read_text()))}
 
 
 def sync(doc_text: str, wanted: dict[str, str]) -> str:

@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from . import external as external_mod
-from . import freecad, joint_config, kinematics, massprops, openscad, render, render_steps, sequence, threads, urdf
+from . import (drive_sizing, eye_accuracy, fits, freecad, joint_config, kinematics, massprops, openscad, render,
+               render_steps, sequence, threads, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
@@ -154,6 +155,26 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     mass_report = mass_summary(params, props, [p for p in parts if p.kind == "board"])
     _write(out / "reports" / "mass.json", json.dumps(mass_report, indent=1))
 
+    # 3b. Drives sized by a check (drive_sizing): the table goes into the package whether or not it passes.
+    progress.note("drive sizing: worst case over the whole range")
+    sizing = drive_sizing.size(params, props)
+    _write(out / "reports" / "drive-sizing.txt", drive_sizing.format_table(sizing) + "\n")
+    _write(out / "reports" / "drive-sizing.json", drive_sizing.dumps(sizing))
+    try:
+        drive_sizing.enforce(sizing)
+    except drive_sizing.SizingError as exc:
+        raise BuildError(str(exc)) from None
+    progress.note("drive sizing: every drive within its continuous ratings, smallest margin "
+                  f"{min(j.margin for j in sizing.joints):.2f} ({drive_sizing.required_margin(params):g} required)")
+    # What each joint does when the power goes, and the eyes' error against the stereo budget: reported, so that
+    # docs/fabricate.md states them from the package (neither is a pass/fail check yet: see there).
+    released = unpowered.analyse(params, props, {j.joint: j.gravity_Nm for j in sizing.joints})
+    _write(out / "reports" / "unpowered.txt", unpowered.format_table(released) + "\n")
+    _write(out / "reports" / "unpowered.json", unpowered.dumps(released))
+    eyes = eye_accuracy.budget(params)
+    _write(out / "reports" / "eye-accuracy.txt", eye_accuracy.format_report(eyes) + "\n")
+    _write(out / "reports" / "eye-accuracy.json", eye_accuracy.dumps(eyes))
+
     # 4. Assembly STEP and GLB at the zero pose.
     asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]
     if not cache.fresh("assembly", geometry_key, asm_out):
@@ -218,9 +239,14 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     densities = params.root.node("materials")
     machined = [d for d in summary if d["kind"] == "machined"]
     tapped = threads.tapped_holes(params, parts)
+    fitted = fits.find(params, parts)
+    _write(out / "reports" / "fits.json", json.dumps(
+        {design: [dict(vars(f), text=f.text()) for f in found] for design, found in sorted(fitted.items())}, indent=1))
     _draw_machined(out, cache, progress, [freecad.DrawingJob(
         d["design"], out / "step" / f"{d['design']}.step", d["material"], densities.num(d["material"]),
-        designs[d["design"]]["part"].note or "", d["hash"][:8], f"step/{d['design']}.step",
+        " ".join(n for n in (designs[d["design"]]["part"].note,
+                             fits.note(fitted[d["design"]]) if d["design"] in fitted else "") if n),
+        d["hash"][:8], f"step/{d['design']}.step",
         [h.as_dict() for h in tapped.get(d["design"], [])]) for d in machined])
 
     # 9. Renders at a few joint poses.

@@ -26,6 +26,7 @@ PURCHASED_KINDS = {
     "retaining_ring": ("bore", "groove_diameter", "groove_width", "thickness", "inner_diameter", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
+    "pin": ("diameter", "length", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
     "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),
 }

@@ -174,8 +174,9 @@ def load(params: HeadParameters) -> HarnessSpec:
     cam = h.node("camera_cables")
     lengths = cam.raw("lengths")
     if (not isinstance(lengths, dict) or not lengths or
-            not all(isinstance(k, (int, float)) and k > 0 and isinstance(v, str) for k, v in lengths.items())):
-        raise cam._fail("lengths", "expected a mapping of positive lengths (mm) to catalog keys")
+            not all(isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool) and v > 0
+                    for k, v in lengths.items())):
+        raise cam._fail("lengths", "expected a mapping of catalog keys to their positive lengths (mm)")
     camera_class = next((c for c in classes.values() if c.shape == "flat"), None)
     if camera_class is None:
         raise h._fail("classes", "the camera cables need a flat class")
@@ -186,4 +187,4 @@ def load(params: HeadParameters) -> HarnessSpec:
     samples = int(h.num("sweep_samples", minimum=2))
     return HarnessSpec(h.num("free_slack", minimum=0), h.num("routed_factor", minimum=1), h.num("service_loop", minimum=0),
                        samples, h.num("host_lead", minimum=0), classes, mating, clamps, tuple(cables), camera_class,
-                       {float(k): lengths[k] for k in sorted(lengths)}, tuple(cams))
+                       {float(mm): key for key, mm in sorted(lengths.items(), key=lambda kv: kv[1])}, tuple(cams))

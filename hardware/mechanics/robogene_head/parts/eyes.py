@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import geom
 from ..params import HeadParameters, ParameterError
-from . import gearhead_screws, mounts, purchased
+from . import eye_stops, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -30,6 +30,8 @@ def eye_cup(params: HeadParameters):
     if corner > r - 1:
         raise ParameterError(f"{params.path}: geometry.eyes.cup_radius: {r} leaves under 1 mm of wall around the "
                              f"camera board corners (they reach {corner:.1f} mm)")
+    # the hard-stop lug at its back (eye_stops), hanging towards the tilt frame's plate
+    cup = geom.union(cup, eye_stops.lug(params, -r - e.num("gap", positive=True)))
     return geom.single_solid(cup, "eye cup")
 
 
@@ -65,12 +67,19 @@ def build(params: HeadParameters) -> list[Part]:
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
     # the eye cups.
     flanges = {s: loc(0, s * half, z_top, rx=180) for s in (1, -1)}
+    stop_pins, stop_holes = [], []
+    for side, sign in (("left", 1), ("right", -1)):
+        found = eye_stops.pins(params, f"{side}_eye_pan", sign * half, z_top, "eyes_tilt_link")
+        stop_pins += found[0]
+        stop_holes += found[1]
     frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
                               for s in (1, -1)],
                      *[t.moved(f) for f in flanges.values()
-                       for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)])
+                       for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)],
+                     *stop_holes)
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
-                  material="aluminium-6082", color=ALUMINIUM, note="Pan gearheads: " + gearhead_screws.note(params))]
+                  material="aluminium-6082", color=ALUMINIUM,
+                  note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",

@@ -60,6 +60,12 @@ def mount_plate(params: HeadParameters, joint: str, outline: tuple[float, float,
     clearance = clearance_hole(params, FIXING_SCREW)
     x0, x1, y0, y1 = outline
     plate = geom.box(x0, x1, y0, y1, 0, thickness)
+    node = mount(params, joint)
+    if node.has("round_top") and node.raw("round_top") is True:
+        # beyond the axis the plate keeps within the gearhead's circle, clear of what turns around that axis
+        r = gearhead_diameter / 2
+        plate = geom.cut(plate, geom.cut(geom.box(0, x1 + 1, y0 - 1, y1 + 1, -1, thickness + 1),
+                                         geom.cyl("z", 2 * r, -2, thickness + 2)))
     holes = [geom.cyl("z", hole, -1, thickness + 1),
              *gearhead_screws.holes(params, gearhead_diameter, thickness, counterbores)]
     for x, y in fixings:

@@ -12,11 +12,11 @@ SCREW = "iso7380-M3x12"
 STANDOFF = "standoff-M3x46-FF"
 UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
                       "face for the pitch motor mount")
-UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: 626 "
-                        "outer ring against the shoulder, DIN 472 groove outside it")
+UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: outer "
+                        "ring against the shoulder, DIN 472 groove outside it")
 PITCH_STAGE_NOTE = ("Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount; cross bar: "
                     "2 x 3.4 through at the front for the front lug's screws")
-FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: 626 outer ring "
+FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: outer ring "
                   "against the shoulder, DIN 472 groove outside it")
 
 
@@ -100,7 +100,7 @@ def _base(params: HeadParameters) -> list[Part]:
     bo = bearing.num("outside")
     height = hp + bo / 2 + 5
     # Both uprights in their design frame at +y. The left one carries the drive: the pitch shaft passes through it
-    # to the gearhead, whose bearings locate it. The right one, turned half a turn about z, holds the floating 626.
+    # to the gearhead, whose bearings locate it. The right one, turned half a turn about z, holds the floating bearing.
     y_face = gap / 2 + ut
     block = geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height)
     bottom_holes = [geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)]

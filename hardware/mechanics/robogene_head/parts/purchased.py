@@ -105,3 +105,9 @@ def standoff(params: HeadParameters, name: str, key: str, link: str, placement: 
     if male:
         shape = geom.union(shape, geom.cyl("z", s.num("thread"), -s.num("stud_length", positive=True), 0))
     return _purchased(params, name, key, link, geom.single_solid(shape, name), placement, STEEL)
+
+
+def pin(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Dowel pin, z 0..length."""
+    p = params.purchased(key)
+    return _purchased(params, name, key, link, geom.cyl("z", p.num("diameter"), 0, p.num("length")), placement, STEEL)
