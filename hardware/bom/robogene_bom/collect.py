@@ -9,6 +9,9 @@ from collections import Counter, OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from OCP.Bnd import Bnd_Box
+from OCP.BRepBndLib import BRepBndLib
+
 from . import board
 from .catalog import Catalog, CatalogError, Item
 
@@ -24,6 +27,16 @@ class Line:
         if self.item.unit == "m":
             return max(1, math.ceil(self.per_head * heads - 1e-9))
         return int(round(self.per_head * heads))
+
+
+def exact_size(shape) -> tuple[float, float, float]:
+    """The shape's bounding box from its geometry alone. CadQuery's BoundingBox() uses a triangulation when the
+    shape has one, so a part meshed for its STL earlier in the run (a fresh build) and one read back from the cache
+    (a rebuild) gave different stock sizes, and so different estimates."""
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(shape.wrapped, box, False, False)
+    x0, y0, z0, x1, y1, z1 = box.Get()
+    return (x1 - x0, y1 - y0, z1 - z0)
 
 
 @dataclass
@@ -95,7 +108,6 @@ def collect(parts, belts, board_boms: list[tuple[Path, int]], catalog: Catalog, 
         first.setdefault(p.design, p)
 
     def made_part(d, k, m, n):
-        bb = first[d].local.BoundingBox()
-        return MadePart(d, k, m, n, first[d].local.Volume(), (bb.xlen, bb.ylen, bb.zlen))
+        return MadePart(d, k, m, n, first[d].local.Volume(), exact_size(first[d].local))
     made = [made_part(d, k, m, n) for (d, k, m), n in sorted(made_counts.items(), key=lambda t: (t[0][1], t[0][0]))]
     return Bom(lines, made, catalog.currency, board_names)
