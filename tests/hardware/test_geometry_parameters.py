@@ -64,7 +64,7 @@ def _size(part) -> tuple[float, float, float]:
     ("geometry.head.joins.side_floor_x", [-38, 20], head_frame, "side_floor_screw_left_0",
      lambda p: p.placement.toTuple()[0][0], -38),
     ("geometry.gearhead_flange.bolt_circle_ratio", 0.6, neck, "neck_pitch_gearhead_screw_0",
-     lambda p: math.hypot(p.placement.toTuple()[0][0], p.placement.toTuple()[0][2] - 48), 0.3 * 23),
+     lambda p: math.hypot(p.placement.toTuple()[0][0], p.placement.toTuple()[0][2] - 48), 0.3 * 32),   # 32/3: 32 mm
     ("geometry.pulleys.flange.rim", 2, head_frame, "neck_yaw_motor_pulley",
      lambda p: _size(p)[0], 14 * 2.032 / math.pi - 0.508 + 4),
 ])
