@@ -4,31 +4,32 @@
 from __future__ import annotations
 
 import hashlib
+import io
+import re
 from pathlib import Path
 
 import cadquery as cq
 from OCP.BRepTools import BRepTools
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
 from OCP.StlAPI import StlAPI_Writer
+from OCP.TopTools import TopTools_FormatVersion
 
 from .parts import Part
 
 LINEAR_TOLERANCE = 0.05   # mm chordal deviation of STL meshes
 ANGULAR_TOLERANCE = 0.2   # rad
+# In the BRep text, each shape's state flags (free, modified, checked, ...) are a line of seven 0/1 digits just
+# before the list of its sub-shapes (orientation +, -, i or e, then indices; '*' ends the list).
+_FLAGS = re.compile(rb"^[01]{7}\n(?=[-+ie*])", re.M)
 
 
 def shape_hash(shape: cq.Shape, *extra: str) -> str:
-    """A content hash of the exact B-rep (plus any extra labels): equal geometry -> equal hash."""
-    import os
-    import tempfile
-    fd, tmp = tempfile.mkstemp(suffix=".brep")
-    os.close(fd)
-    try:
-        BRepTools.Write_s(shape.wrapped, tmp)
-        data = Path(tmp).read_bytes()
-    finally:
-        os.unlink(tmp)
-    h = hashlib.sha256(data)
+    """A content hash of the exact B-rep (plus any extra labels): equal geometry -> equal hash. Meshing a shape (an
+    STL, a link mesh) attaches triangulations and sets its sub-shapes' "checked" flags; both are left out, or a build
+    that exported a part and one that found it cached would hash it differently and redraw what depends on it."""
+    stream = io.BytesIO()
+    BRepTools.Write_s(shape.wrapped, stream, False, False, TopTools_FormatVersion.TopTools_FormatVersion_VERSION_1)
+    h = hashlib.sha256(_FLAGS.sub(b"", stream.getvalue()))
     for label in extra:
         h.update(b"\0" + label.encode())
     return h.hexdigest()
