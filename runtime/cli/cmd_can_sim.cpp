@@ -39,6 +39,7 @@ int cmd_can_sim(Args& args) {
   const auto from = args.option("--from");
   const auto log_path = args.option("--log");
   const auto duration = args.option("--duration");
+  const auto flash_dir = args.option("--flash-dir");
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
   if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
@@ -47,9 +48,12 @@ int cmd_can_sim(Args& args) {
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));
   std::unique_ptr<can::Bus> bus = can::open_bus(*bus_spec);
   if (log_path) bus = std::make_unique<can::LoggingBus>(std::move(bus), std::make_shared<can::CandumpWriter>(*log_path));
-  can::sim::SimulatedHead sim(head, std::move(bus));
+  can::sim::SimulatedHead sim(head, std::move(bus), {}, flash_dir.value_or(""));
   std::string boards;
-  for (const auto& b : head.boards) boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address);
+  for (const auto& b : head.boards) {
+    boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address) +
+              (sim.in_bootloader(b.address) ? " (in its bootloader)" : "");
+  }
   std::printf("can-sim: %zu boards (%s) on %s%s\n", head.boards.size(), boards.c_str(), bus_spec->c_str(),
               seconds < 0 ? "; Ctrl-C stops" : "");
   std::fflush(stdout);
