@@ -7,12 +7,14 @@
 #include <signal.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <memory>
 
 #include "commands.hpp"
 #include "robogene/can/logging_bus.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
+#include "robogene/can/virtual_bus.hpp"
 #include "robogene/dev/property.hpp"
 
 namespace robogene::cli {
@@ -45,6 +47,15 @@ int cmd_can_sim(Args& args) {
   if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
   const double seconds = duration ? parse_seconds(*duration, "--duration") : -1.0;
 
+  if (flash_dir && bus_spec->rfind("virtual:", 0) == 0) {
+    // The virtual bus takes every file in its directory for a node's socket and removes it.
+    char* bus_dir = ::realpath(can::VirtualBus::directory_for(bus_spec->substr(8)).c_str(), nullptr);
+    char* flash = ::realpath(flash_dir->c_str(), nullptr);
+    const bool same = bus_dir && flash && std::string(bus_dir) == flash;
+    std::free(bus_dir);
+    std::free(flash);
+    if (same) throw UsageError("--flash-dir " + *flash_dir + " is the virtual bus's own directory; give another");
+  }
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));
   std::unique_ptr<can::Bus> bus = can::open_bus(*bus_spec);
   if (log_path) bus = std::make_unique<can::LoggingBus>(std::move(bus), std::make_shared<can::CandumpWriter>(*log_path));

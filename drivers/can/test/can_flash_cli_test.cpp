@@ -26,6 +26,16 @@ TEST(CanFlashOverSocketCan, RefusesWrongImagesAndSurvivesAnInterruptedUpdate) {
   testing::run_flash_session("socketcan:" + iface, scratch);
 }
 
+TEST(CanFlashCli, CanSimRefusesAFlashDirThatIsTheVirtualBussOwn) {
+  testing::TempBusDir dir;
+  const std::string bus_dir = dir.path() + "/update";
+  ::mkdir(bus_dir.c_str(), 0755);
+  const auto r = testing::run_command(testing::robogene_bin() + " can-sim --bus virtual:update --from " + testing::head_ini_path() +
+                                      " --duration 1 --flash-dir " + bus_dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("is the virtual bus's own directory; give another"), std::string::npos) << r.output;
+}
+
 TEST(CanFlashCli, UsageErrorsAreNamed) {
   const auto none = testing::run_command(testing::robogene_bin() + " can-flash --bus virtual:x");
   EXPECT_EQ(none.status, 2);
