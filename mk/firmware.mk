@@ -15,7 +15,11 @@ FW_OBJ    := $(BUILD)/firmware-obj
 FW_CC     := arm-none-eabi-gcc
 FW_ARCH   := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 # The board revision, from its one source (the schematic, the board and the catalog take it there too).
-FW_REVISION := $(shell sed -n 's/^REVISION = "\([A-Z]\)".*/\1/p' hardware/electronics/generator/design.py)
+FW_REVISION_SOURCE := hardware/electronics/generator/design.py
+FW_REVISION := $(shell sed -n 's/^REVISION = "\([A-Z]\)".*/\1/p' $(FW_REVISION_SOURCE))
+ifeq ($(FW_REVISION),)
+$(error $(FW_REVISION_SOURCE): no line REVISION = "<letter>" (the board revision the firmware is built for))
+endif
 FW_CFLAGS := $(FW_ARCH) -Os -g -std=c11 -Wall -Wextra -Wpedantic -Werror -Wdouble-promotion -Wshadow \
              -ffunction-sections -fdata-sections -I$(FW_DIR)/core -I$(FW_DIR) -I$(FW_DIR)/stm32 \
              -DROBOGENE_BOARD_REVISION=\'$(FW_REVISION)\'
@@ -39,7 +43,7 @@ FW_IMAGES := $(foreach b,$(FW_BOARDS),$(FW_OUT)/robogene-motor-board-$(b) $(FW_O
 # then stamped (size and CRC-32 into its header, tools/stamp_image.py); HEX and BIN come from the
 # stamped ELF.
 $(FW_OUT)/robogene-motor-board-%.elf: $(FW_SOURCES) $(FW_HEADERS) $(FW_DIR)/stm32/stm32g431kb.ld \
-                                      $(FW_DIR)/tools/stamp_image.py $(STAMPS)/apt-firmware
+                                      $(FW_DIR)/tools/stamp_image.py $(FW_REVISION_SOURCE) $(STAMPS)/apt-firmware
 	@mkdir -p $(FW_OBJ)/$* $(FW_OUT)
 	set -e; objs=; for src in $(FW_SOURCES); do \
 	  obj=$(FW_OBJ)/$*/$$(basename $$src .c).o; \
@@ -50,7 +54,7 @@ $(FW_OUT)/robogene-motor-board-%.elf: $(FW_SOURCES) $(FW_HEADERS) $(FW_DIR)/stm3
 	$(PYTHON3) $(FW_DIR)/tools/stamp_image.py $(FW_OBJ)/$*.unstamped.elf $@
 
 $(FW_OUT)/robogene-bootloader-%.elf: $(FW_BOOT_SOURCES) $(FW_HEADERS) $(FW_DIR)/bootloader/stm32g431kb_bootloader.ld \
-                                     $(STAMPS)/apt-firmware
+                                     $(FW_REVISION_SOURCE) $(STAMPS)/apt-firmware
 	@mkdir -p $(FW_OBJ)/boot-$* $(FW_OUT)
 	set -e; objs=; for src in $(FW_BOOT_SOURCES); do \
 	  obj=$(FW_OBJ)/boot-$*/$$(basename $$src .c).o; \
