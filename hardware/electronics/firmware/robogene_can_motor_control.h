@@ -40,7 +40,8 @@
 #define ROBOGENE_CAN_CLASS_PERIODIC_BATTERY 6u
 #define ROBOGENE_CAN_CLASS_BOOTLOADER 7u
 
-// Commands (class polling_motor_control): code and data length of the request and the reply
+// Commands of every class that has them (names are unique across classes): code and data length
+// of the request and the reply
 #define ROBOGENE_CAN_CMD_CALIBRATE_ENCODER 4u
 #define ROBOGENE_CAN_LEN_CALIBRATE_ENCODER 6u
 #define ROBOGENE_CAN_CMD_GET_CONTROL_MODE 7u
