@@ -137,3 +137,18 @@ def test_the_size_report_names_what_does_not_fit(image, tmp_path):
     small_ram = subprocess.run([sys.executable, str(SIZE_REPORT), str(image), str(tmp_path / "m.txt"), "--ram", "2048"],
                                capture_output=True, text=True)
     assert small_ram.returncode == 1 and "RAM" in small_ram.stderr and "over the 2048 available" in small_ram.stderr
+
+
+def test_the_bootloader_checks_the_image_before_it_jumps_with_the_applications_table(image):
+    """main() of each bootloader: the handoff request, the image check, then VTOR, MSP and a branch
+    to the reset vector, all read from the application region's first two words."""
+    boot = image.with_name(image.name.replace("motor-board", "bootloader"))
+    out = subprocess.run(["arm-none-eabi-objdump", "-d", "--no-show-raw-insn", str(boot)], capture_output=True,
+                         text=True, check=True).stdout
+    main = out[out.index("<main>:"):]
+    main = main[:main.index("\n\n")]
+    calls = re.findall(r"bl\s+\w+ <(\w+)>", main)
+    assert calls.index("handoff_take_bootloader_request") < calls.index("rg_boot_image_valid") < calls.index("fdcan_init")
+    jump = main[main.index("<rg_boot_image_valid>"):main.index("<fdcan_init>")]
+    assert re.search(r"str(\.w)?\s+r\d+, \[r\d+, #3336\]", jump), "VTOR (0xE000ED08) is set"
+    assert re.search(r"msr\s+MSP, r\d+", jump) and re.search(r"\bbx\s+r\d+", jump), "stack pointer, then the reset vector"
