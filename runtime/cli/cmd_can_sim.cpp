@@ -7,12 +7,14 @@
 #include <signal.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <memory>
 
 #include "commands.hpp"
 #include "robogene/can/logging_bus.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
+#include "robogene/can/virtual_bus.hpp"
 #include "robogene/dev/property.hpp"
 
 namespace robogene::cli {
@@ -39,17 +41,30 @@ int cmd_can_sim(Args& args) {
   const auto from = args.option("--from");
   const auto log_path = args.option("--log");
   const auto duration = args.option("--duration");
+  const auto flash_dir = args.option("--flash-dir");
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
   if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
   const double seconds = duration ? parse_seconds(*duration, "--duration") : -1.0;
 
+  if (flash_dir && bus_spec->rfind("virtual:", 0) == 0) {
+    // The virtual bus takes every file in its directory for a node's socket and removes it.
+    char* bus_dir = ::realpath(can::VirtualBus::directory_for(bus_spec->substr(8)).c_str(), nullptr);
+    char* flash = ::realpath(flash_dir->c_str(), nullptr);
+    const bool same = bus_dir && flash && std::string(bus_dir) == flash;
+    std::free(bus_dir);
+    std::free(flash);
+    if (same) throw UsageError("--flash-dir " + *flash_dir + " is the virtual bus's own directory; give another");
+  }
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));
   std::unique_ptr<can::Bus> bus = can::open_bus(*bus_spec);
   if (log_path) bus = std::make_unique<can::LoggingBus>(std::move(bus), std::make_shared<can::CandumpWriter>(*log_path));
-  can::sim::SimulatedHead sim(head, std::move(bus));
+  can::sim::SimulatedHead sim(head, std::move(bus), {}, flash_dir.value_or(""));
   std::string boards;
-  for (const auto& b : head.boards) boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address);
+  for (const auto& b : head.boards) {
+    boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address) +
+              (sim.in_bootloader(b.address) ? " (in its bootloader)" : "");
+  }
   std::printf("can-sim: %zu boards (%s) on %s%s\n", head.boards.size(), boards.c_str(), bus_spec->c_str(),
               seconds < 0 ? "; Ctrl-C stops" : "");
   std::fflush(stdout);

@@ -73,3 +73,32 @@ def test_named_values_match_enums(can, db):
     assert str(decoded["mode0"]) == "position" and str(decoded["mode1"]) == "hardware_fault"
     decoded = db.decode_message(0x001, bytes.fromhex("8902"), allow_truncated=True)
     assert str(decoded["command"]) == "set_control_mode" and str(decoded["set_control_mode_mode"]) == "velocity"
+
+
+def test_bootloader_frames_decode_alike(can, db):
+    """The bootloader class has its own DBC messages per board (HOST_TO_<BOARD>_BOOTLOADER and
+    <BOARD>_BOOTLOADER_REPLY), multiplexed like the motor-control commands."""
+    assert db.get_message_by_name("HOST_TO_EYES_PAN_BOOTLOADER").frame_id == 0x703
+    assert db.get_message_by_name("EYES_PAN_BOOTLOADER_REPLY").frame_id == 0x730
+    envelopes = [
+        can.command(3, 0, can.EnterBootloader(key=0x544F4F42)),
+        can.command(3, 0, can.BootloaderIdentify()),
+        can.reply(3, 0, can.BootloaderIdentifyReply(board_type=can.BoardType.ROBOGENE_MOTOR_BOARD, board_id=3,
+                                                    revision=ord("C"), stage=can.FirmwareStage.BOOTLOADER,
+                                                    image_valid=False, version_major=1, version_minor=0)),
+        can.command(3, 0, can.BootloaderErase(size=10912)),
+        can.reply(3, 0, can.BootloaderEraseReply(status=can.BootStatus.OK)),
+        can.command(3, 0, can.BootloaderWrite(sequence=513, data=0xDEADBEEF)),
+        can.reply(3, 0, can.BootloaderWriteReply(sequence=513, status=can.BootStatus.WRONG_BOARD)),
+        can.command(3, 0, can.BootloaderVerify()),
+        can.reply(3, 0, can.BootloaderVerifyReply(status=can.BootStatus.CRC_MISMATCH, crc=0x495A7594)),
+        can.command(3, 0, can.BootloaderStart()),
+        can.reply(3, 0, can.BootloaderStartReply(status=can.BootStatus.NO_IMAGE)),
+    ]
+    for env in envelopes:
+        frame = can.encode(env)
+        decoded = db.decode_message(frame.id, frame.data, decode_choices=False, allow_truncated=True)
+        assert decoded == _expected(can, can.decode(frame)), str(frame)
+    status = db.decode_message(0x730, bytes.fromhex("03010206"), allow_truncated=True)
+    assert str(status["command"]) == "bootloader_write_reply"
+    assert str(status["bootloader_write_reply_status"]) == "wrong_board"

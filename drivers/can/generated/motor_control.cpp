@@ -213,6 +213,80 @@ std::int64_t wire_of(BoardType v, const char* message, const char* field) {
   return static_cast<std::int64_t>(v);
 }
 
+const char* name_of(FirmwareStage v) {
+  switch (v) {
+    case FirmwareStage::application: return "application";
+    case FirmwareStage::bootloader: return "bootloader";
+  }
+  return nullptr;
+}
+
+FirmwareStage firmware_stage_from_wire(std::int64_t raw, const char* message, const char* field) {
+  const auto v = static_cast<FirmwareStage>(raw);
+  if (raw < 0 || raw > 255 || name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(raw) + " is not a FirmwareStage");
+  }
+  return v;
+}
+
+FirmwareStage firmware_stage_from_text(const std::string& word, const char* message, const char* field) {
+  if (word == "application") return FirmwareStage::application;
+  if (word == "bootloader") return FirmwareStage::bootloader;
+  fail(std::string(message) + "." + field + ": '" + word + "' is not a FirmwareStage (application, bootloader)");
+}
+
+std::int64_t wire_of(FirmwareStage v, const char* message, const char* field) {
+  if (name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(static_cast<std::int64_t>(v)) + " is not a FirmwareStage");
+  }
+  return static_cast<std::int64_t>(v);
+}
+
+const char* name_of(BootStatus v) {
+  switch (v) {
+    case BootStatus::ok: return "ok";
+    case BootStatus::bad_state: return "bad_state";
+    case BootStatus::bad_sequence: return "bad_sequence";
+    case BootStatus::out_of_range: return "out_of_range";
+    case BootStatus::flash_error: return "flash_error";
+    case BootStatus::bad_header: return "bad_header";
+    case BootStatus::wrong_board: return "wrong_board";
+    case BootStatus::wrong_revision: return "wrong_revision";
+    case BootStatus::crc_mismatch: return "crc_mismatch";
+    case BootStatus::no_image: return "no_image";
+  }
+  return nullptr;
+}
+
+BootStatus boot_status_from_wire(std::int64_t raw, const char* message, const char* field) {
+  const auto v = static_cast<BootStatus>(raw);
+  if (raw < 0 || raw > 255 || name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(raw) + " is not a BootStatus");
+  }
+  return v;
+}
+
+BootStatus boot_status_from_text(const std::string& word, const char* message, const char* field) {
+  if (word == "ok") return BootStatus::ok;
+  if (word == "bad_state") return BootStatus::bad_state;
+  if (word == "bad_sequence") return BootStatus::bad_sequence;
+  if (word == "out_of_range") return BootStatus::out_of_range;
+  if (word == "flash_error") return BootStatus::flash_error;
+  if (word == "bad_header") return BootStatus::bad_header;
+  if (word == "wrong_board") return BootStatus::wrong_board;
+  if (word == "wrong_revision") return BootStatus::wrong_revision;
+  if (word == "crc_mismatch") return BootStatus::crc_mismatch;
+  if (word == "no_image") return BootStatus::no_image;
+  fail(std::string(message) + "." + field + ": '" + word + "' is not a BootStatus (ok, bad_state, bad_sequence, out_of_range, flash_error, bad_header, wrong_board, wrong_revision, crc_mismatch, no_image)");
+}
+
+std::int64_t wire_of(BootStatus v, const char* message, const char* field) {
+  if (name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(static_cast<std::int64_t>(v)) + " is not a BootStatus");
+  }
+  return static_cast<std::int64_t>(v);
+}
+
 bool is_digit(char c, bool hex) {
   return (c >= '0' && c <= '9') || (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')));
 }
@@ -1311,6 +1385,241 @@ void parse_fields(TextFields& t, SupplyBroadcast& m) {
   m.voltage = t.real("voltage");
 }
 
+// ---- enter_bootloader
+void put_fields(Frame& f, const EnterBootloader& m) {
+  put(f, 1, 4, static_cast<std::int64_t>(m.key));
+}
+
+void take_fields(const Frame& f, EnterBootloader& m) {
+  m.key = static_cast<std::uint32_t>(get(f, 1, 4, false));
+}
+
+void text_fields(std::string& s, const EnterBootloader& m) {
+  s += " key=" + std::to_string(m.key);
+}
+
+void parse_fields(TextFields& t, EnterBootloader& m) {
+  m.key = static_cast<std::uint32_t>(t.integer("key", 0, 4294967295LL));
+}
+
+// ---- bootloader_identify
+void put_fields(Frame& f, const BootloaderIdentify& m) {
+  (void)f;
+  (void)m;
+}
+
+void take_fields(const Frame& f, BootloaderIdentify& m) {
+  (void)f;
+  (void)m;
+}
+
+void text_fields(std::string& s, const BootloaderIdentify& m) {
+  (void)s;
+  (void)m;
+}
+
+void parse_fields(TextFields& t, BootloaderIdentify& m) {
+  (void)t;
+  (void)m;
+}
+
+// ---- bootloader_identify_reply
+void put_fields(Frame& f, const BootloaderIdentifyReply& m) {
+  put(f, 1, 1, wire_of(m.board_type, "bootloader_identify_reply", "board_type"));
+  put(f, 2, 1, static_cast<std::int64_t>(m.board_id));
+  put(f, 3, 1, static_cast<std::int64_t>(m.revision));
+  put(f, 4, 1, wire_of(m.stage, "bootloader_identify_reply", "stage"));
+  put(f, 5, 1, m.image_valid ? 1 : 0);
+  put(f, 6, 1, static_cast<std::int64_t>(m.version_major));
+  put(f, 7, 1, static_cast<std::int64_t>(m.version_minor));
+}
+
+void take_fields(const Frame& f, BootloaderIdentifyReply& m) {
+  m.board_type = board_type_from_wire(get(f, 1, 1, false), "bootloader_identify_reply", "board_type");
+  m.board_id = static_cast<std::uint8_t>(get(f, 2, 1, false));
+  m.revision = static_cast<std::uint8_t>(get(f, 3, 1, false));
+  m.stage = firmware_stage_from_wire(get(f, 4, 1, false), "bootloader_identify_reply", "stage");
+  m.image_valid = bool_from_wire(get(f, 5, 1, false), "bootloader_identify_reply", "image_valid");
+  m.version_major = static_cast<std::uint8_t>(get(f, 6, 1, false));
+  m.version_minor = static_cast<std::uint8_t>(get(f, 7, 1, false));
+}
+
+void text_fields(std::string& s, const BootloaderIdentifyReply& m) {
+  s += " board_type=" + std::string(to_string(m.board_type));
+  s += " board_id=" + std::to_string(m.board_id);
+  s += " revision=" + std::to_string(m.revision);
+  s += " stage=" + std::string(to_string(m.stage));
+  s += " image_valid=" + std::string(m.image_valid ? "true" : "false");
+  s += " version_major=" + std::to_string(m.version_major);
+  s += " version_minor=" + std::to_string(m.version_minor);
+}
+
+void parse_fields(TextFields& t, BootloaderIdentifyReply& m) {
+  m.board_type = board_type_from_text(t.word("board_type"), "bootloader_identify_reply", "board_type");
+  m.board_id = static_cast<std::uint8_t>(t.integer("board_id", 0, 255));
+  m.revision = static_cast<std::uint8_t>(t.integer("revision", 0, 255));
+  m.stage = firmware_stage_from_text(t.word("stage"), "bootloader_identify_reply", "stage");
+  m.image_valid = t.boolean("image_valid");
+  m.version_major = static_cast<std::uint8_t>(t.integer("version_major", 0, 255));
+  m.version_minor = static_cast<std::uint8_t>(t.integer("version_minor", 0, 255));
+}
+
+// ---- bootloader_erase
+void put_fields(Frame& f, const BootloaderErase& m) {
+  put(f, 1, 4, static_cast<std::int64_t>(m.size));
+}
+
+void take_fields(const Frame& f, BootloaderErase& m) {
+  m.size = static_cast<std::uint32_t>(get(f, 1, 4, false));
+}
+
+void text_fields(std::string& s, const BootloaderErase& m) {
+  s += " size=" + std::to_string(m.size);
+}
+
+void parse_fields(TextFields& t, BootloaderErase& m) {
+  m.size = static_cast<std::uint32_t>(t.integer("size", 0, 4294967295LL));
+}
+
+// ---- bootloader_erase_reply
+void put_fields(Frame& f, const BootloaderEraseReply& m) {
+  put(f, 1, 1, wire_of(m.status, "bootloader_erase_reply", "status"));
+}
+
+void take_fields(const Frame& f, BootloaderEraseReply& m) {
+  m.status = boot_status_from_wire(get(f, 1, 1, false), "bootloader_erase_reply", "status");
+}
+
+void text_fields(std::string& s, const BootloaderEraseReply& m) {
+  s += " status=" + std::string(to_string(m.status));
+}
+
+void parse_fields(TextFields& t, BootloaderEraseReply& m) {
+  m.status = boot_status_from_text(t.word("status"), "bootloader_erase_reply", "status");
+}
+
+// ---- bootloader_write
+void put_fields(Frame& f, const BootloaderWrite& m) {
+  put(f, 1, 2, static_cast<std::int64_t>(m.sequence));
+  put(f, 3, 4, static_cast<std::int64_t>(m.data));
+}
+
+void take_fields(const Frame& f, BootloaderWrite& m) {
+  m.sequence = static_cast<std::uint16_t>(get(f, 1, 2, false));
+  m.data = static_cast<std::uint32_t>(get(f, 3, 4, false));
+}
+
+void text_fields(std::string& s, const BootloaderWrite& m) {
+  s += " sequence=" + std::to_string(m.sequence);
+  s += " data=" + std::to_string(m.data);
+}
+
+void parse_fields(TextFields& t, BootloaderWrite& m) {
+  m.sequence = static_cast<std::uint16_t>(t.integer("sequence", 0, 65535));
+  m.data = static_cast<std::uint32_t>(t.integer("data", 0, 4294967295LL));
+}
+
+// ---- bootloader_write_reply
+void put_fields(Frame& f, const BootloaderWriteReply& m) {
+  put(f, 1, 2, static_cast<std::int64_t>(m.sequence));
+  put(f, 3, 1, wire_of(m.status, "bootloader_write_reply", "status"));
+}
+
+void take_fields(const Frame& f, BootloaderWriteReply& m) {
+  m.sequence = static_cast<std::uint16_t>(get(f, 1, 2, false));
+  m.status = boot_status_from_wire(get(f, 3, 1, false), "bootloader_write_reply", "status");
+}
+
+void text_fields(std::string& s, const BootloaderWriteReply& m) {
+  s += " sequence=" + std::to_string(m.sequence);
+  s += " status=" + std::string(to_string(m.status));
+}
+
+void parse_fields(TextFields& t, BootloaderWriteReply& m) {
+  m.sequence = static_cast<std::uint16_t>(t.integer("sequence", 0, 65535));
+  m.status = boot_status_from_text(t.word("status"), "bootloader_write_reply", "status");
+}
+
+// ---- bootloader_verify
+void put_fields(Frame& f, const BootloaderVerify& m) {
+  (void)f;
+  (void)m;
+}
+
+void take_fields(const Frame& f, BootloaderVerify& m) {
+  (void)f;
+  (void)m;
+}
+
+void text_fields(std::string& s, const BootloaderVerify& m) {
+  (void)s;
+  (void)m;
+}
+
+void parse_fields(TextFields& t, BootloaderVerify& m) {
+  (void)t;
+  (void)m;
+}
+
+// ---- bootloader_verify_reply
+void put_fields(Frame& f, const BootloaderVerifyReply& m) {
+  put(f, 1, 1, wire_of(m.status, "bootloader_verify_reply", "status"));
+  put(f, 2, 4, static_cast<std::int64_t>(m.crc));
+}
+
+void take_fields(const Frame& f, BootloaderVerifyReply& m) {
+  m.status = boot_status_from_wire(get(f, 1, 1, false), "bootloader_verify_reply", "status");
+  m.crc = static_cast<std::uint32_t>(get(f, 2, 4, false));
+}
+
+void text_fields(std::string& s, const BootloaderVerifyReply& m) {
+  s += " status=" + std::string(to_string(m.status));
+  s += " crc=" + std::to_string(m.crc);
+}
+
+void parse_fields(TextFields& t, BootloaderVerifyReply& m) {
+  m.status = boot_status_from_text(t.word("status"), "bootloader_verify_reply", "status");
+  m.crc = static_cast<std::uint32_t>(t.integer("crc", 0, 4294967295LL));
+}
+
+// ---- bootloader_start
+void put_fields(Frame& f, const BootloaderStart& m) {
+  (void)f;
+  (void)m;
+}
+
+void take_fields(const Frame& f, BootloaderStart& m) {
+  (void)f;
+  (void)m;
+}
+
+void text_fields(std::string& s, const BootloaderStart& m) {
+  (void)s;
+  (void)m;
+}
+
+void parse_fields(TextFields& t, BootloaderStart& m) {
+  (void)t;
+  (void)m;
+}
+
+// ---- bootloader_start_reply
+void put_fields(Frame& f, const BootloaderStartReply& m) {
+  put(f, 1, 1, wire_of(m.status, "bootloader_start_reply", "status"));
+}
+
+void take_fields(const Frame& f, BootloaderStartReply& m) {
+  m.status = boot_status_from_wire(get(f, 1, 1, false), "bootloader_start_reply", "status");
+}
+
+void text_fields(std::string& s, const BootloaderStartReply& m) {
+  s += " status=" + std::string(to_string(m.status));
+}
+
+void parse_fields(TextFields& t, BootloaderStartReply& m) {
+  m.status = boot_status_from_text(t.word("status"), "bootloader_start_reply", "status");
+}
+
 template <class M>
 Frame encode_one(const Envelope& e, const M& m) {
   Frame f;
@@ -1402,6 +1711,16 @@ const char* to_string(CalibrationType v) {
 }
 
 const char* to_string(BoardType v) {
+  const char* name = name_of(v);
+  return name ? name : "(undefined)";
+}
+
+const char* to_string(FirmwareStage v) {
+  const char* name = name_of(v);
+  return name ? name : "(undefined)";
+}
+
+const char* to_string(BootStatus v) {
   const char* name = name_of(v);
   return name ? name : "(undefined)";
 }
@@ -1619,6 +1938,50 @@ bool SupplyBroadcast::operator==(const SupplyBroadcast& o) const {
   return voltage == o.voltage;
 }
 
+bool EnterBootloader::operator==(const EnterBootloader& o) const {
+  return key == o.key;
+}
+
+bool BootloaderIdentify::operator==(const BootloaderIdentify& ) const {
+  return true;
+}
+
+bool BootloaderIdentifyReply::operator==(const BootloaderIdentifyReply& o) const {
+  return board_type == o.board_type && board_id == o.board_id && revision == o.revision && stage == o.stage && image_valid == o.image_valid && version_major == o.version_major && version_minor == o.version_minor;
+}
+
+bool BootloaderErase::operator==(const BootloaderErase& o) const {
+  return size == o.size;
+}
+
+bool BootloaderEraseReply::operator==(const BootloaderEraseReply& o) const {
+  return status == o.status;
+}
+
+bool BootloaderWrite::operator==(const BootloaderWrite& o) const {
+  return sequence == o.sequence && data == o.data;
+}
+
+bool BootloaderWriteReply::operator==(const BootloaderWriteReply& o) const {
+  return sequence == o.sequence && status == o.status;
+}
+
+bool BootloaderVerify::operator==(const BootloaderVerify& ) const {
+  return true;
+}
+
+bool BootloaderVerifyReply::operator==(const BootloaderVerifyReply& o) const {
+  return status == o.status && crc == o.crc;
+}
+
+bool BootloaderStart::operator==(const BootloaderStart& ) const {
+  return true;
+}
+
+bool BootloaderStartReply::operator==(const BootloaderStartReply& o) const {
+  return status == o.status;
+}
+
 bool Envelope::operator==(const Envelope& o) const {
   return source == o.source && destination == o.destination && axis == o.axis && message == o.message;
 }
@@ -1791,7 +2154,35 @@ Envelope decode(const Frame& f) {
     case 6:  // periodic_battery
       fail(frame_text(f) + ": class 6 (periodic_battery) carries no message of this protocol");
     case 7:  // bootloader
-      fail(frame_text(f) + ": class 7 (bootloader) carries no message of this protocol");
+    {
+      if (f.len < 1) fail(frame_text(f) + ": a bootloader frame starts with a command byte, this one is empty");
+      e.destination = id.low;
+      e.axis = static_cast<std::uint8_t>(f.data[0] >> 7);
+      const bool from_host = id.source == kHostAddress;
+      switch (f.data[0] & 0x7F) {
+        case 0:
+          if (!from_host) fail(frame_text(f) + ": board " + std::to_string(id.source) + " sent enter_bootloader, which has no reply");
+          e.message = take<EnterBootloader>(f);
+          return e;
+        case 1:
+          e.message = from_host ? take<BootloaderIdentify>(f) : take<BootloaderIdentifyReply>(f);
+          return e;
+        case 2:
+          e.message = from_host ? take<BootloaderErase>(f) : take<BootloaderEraseReply>(f);
+          return e;
+        case 3:
+          e.message = from_host ? take<BootloaderWrite>(f) : take<BootloaderWriteReply>(f);
+          return e;
+        case 5:
+          e.message = from_host ? take<BootloaderVerify>(f) : take<BootloaderVerifyReply>(f);
+          return e;
+        case 6:
+          e.message = from_host ? take<BootloaderStart>(f) : take<BootloaderStartReply>(f);
+          return e;
+        default:
+          fail(frame_text(f) + ": unknown command " + std::to_string(f.data[0] & 0x7F) + " in class 7 (bootloader)");
+      }
+    }
   }
   fail(frame_text(f) + ": unknown message class " + std::to_string(id.message_class));
 }
@@ -1860,6 +2251,17 @@ Envelope from_text(std::string_view text) {
   if (tokens[0] == CurrentBroadcast::name) return parse_one<CurrentBroadcast>(t);
   if (tokens[0] == VelocityBroadcast::name) return parse_one<VelocityBroadcast>(t);
   if (tokens[0] == SupplyBroadcast::name) return parse_one<SupplyBroadcast>(t);
+  if (tokens[0] == EnterBootloader::name) return parse_one<EnterBootloader>(t);
+  if (tokens[0] == BootloaderIdentify::name) return parse_one<BootloaderIdentify>(t);
+  if (tokens[0] == BootloaderIdentifyReply::name) return parse_one<BootloaderIdentifyReply>(t);
+  if (tokens[0] == BootloaderErase::name) return parse_one<BootloaderErase>(t);
+  if (tokens[0] == BootloaderEraseReply::name) return parse_one<BootloaderEraseReply>(t);
+  if (tokens[0] == BootloaderWrite::name) return parse_one<BootloaderWrite>(t);
+  if (tokens[0] == BootloaderWriteReply::name) return parse_one<BootloaderWriteReply>(t);
+  if (tokens[0] == BootloaderVerify::name) return parse_one<BootloaderVerify>(t);
+  if (tokens[0] == BootloaderVerifyReply::name) return parse_one<BootloaderVerifyReply>(t);
+  if (tokens[0] == BootloaderStart::name) return parse_one<BootloaderStart>(t);
+  if (tokens[0] == BootloaderStartReply::name) return parse_one<BootloaderStartReply>(t);
   fail("unknown message '" + tokens[0] + "'");
 }
 

@@ -23,7 +23,7 @@ namespace robogene::can {
 
 inline constexpr char kProtocolName[] = "motor_control";
 // First 16 hex digits of the SHA-256 of the protocol's canonical form.
-inline constexpr char kProtocolFingerprint[] = "4cbe3ad6bb6add3d";
+inline constexpr char kProtocolFingerprint[] = "250b8f75f4216175";
 inline constexpr std::uint8_t kProtocolMajor = 1;
 inline constexpr std::uint8_t kProtocolMinor = 0;
 inline constexpr std::uint32_t kBitrate = 1000000;  // bit/s
@@ -54,7 +54,7 @@ enum class MessageClass : std::uint8_t {
   periodic_skin = 4,  // Reserved (skin).
   periodic_inertial_sensor = 5,  // Reserved (IMU).
   periodic_battery = 6,  // Reserved (battery).
-  bootloader = 7,  // Reserved (firmware update).
+  bootloader = 7,  // Robogene: firmware update over the bus. The application answers bootloader_identify and enter_bootloader; the bootloader, in its own flash region, answers them all. The image is written 4 bytes a frame, each acknowledged, and must carry the header the build stamps (board, revision, size, CRC-32) before the bootloader starts it.
 };
 const char* to_string(MessageClass c);
 
@@ -106,6 +106,28 @@ enum class BoardType : std::uint8_t {
   unknown = 255,
 };
 const char* to_string(BoardType v);
+
+// Robogene: which firmware answers bootloader_identify.
+enum class FirmwareStage : std::uint8_t {
+  application = 0,
+  bootloader = 1,
+};
+const char* to_string(FirmwareStage v);
+
+// Robogene: the bootloader's answer to an update step.
+enum class BootStatus : std::uint8_t {
+  ok = 0,
+  bad_state = 1,  // Not now (a write before an erase, a verify before the last write).
+  bad_sequence = 2,  // A write out of order; its reply names the sequence expected.
+  out_of_range = 3,  // Beyond the application region or the size erased.
+  flash_error = 4,  // The flash reported an error erasing or programming.
+  bad_header = 5,  // No image header, or one that does not describe this image.
+  wrong_board = 6,  // The image was built for another board.
+  wrong_revision = 7,  // The image was built for another board revision.
+  crc_mismatch = 8,  // The flash does not hold the image the header describes.
+  no_image = 9,  // No valid image to start.
+};
+const char* to_string(BootStatus v);
 
 // Fault bits of one axis in the status broadcast.
 namespace axis_faults {
@@ -171,6 +193,12 @@ enum class Command : std::uint8_t {
   get_position_pid_limits = 85,
   set_velocity_timeout = 86,
   get_firmware_version = 91,
+  enter_bootloader = 0,
+  bootloader_identify = 1,
+  bootloader_erase = 2,
+  bootloader_write = 3,
+  bootloader_verify = 5,
+  bootloader_start = 6,
 };
 enum class BroadcastType : std::uint8_t {
   position = 1,
@@ -787,6 +815,144 @@ struct SupplyBroadcast {
   bool operator!=(const SupplyBroadcast& o) const { return !(*this == o); }
 };
 
+// Robogene: restart into the bootloader and stay there. The application stops its motors first; a wrong key is ignored, so that no stray frame restarts a running board.
+struct EnterBootloader {
+  static constexpr char name[] = "enter_bootloader";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 0;
+  static constexpr std::uint8_t length = 5;  // data bytes (DLC)
+  std::uint32_t key = 0;  // uint32
+  bool operator==(const EnterBootloader& o) const;
+  bool operator!=(const EnterBootloader& o) const { return !(*this == o); }
+};
+
+// Robogene: which firmware runs on the board, and for which board it was built.
+struct BootloaderIdentify {
+  static constexpr char name[] = "bootloader_identify";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 1;
+  static constexpr std::uint8_t length = 1;  // data bytes (DLC)
+  bool operator==(const BootloaderIdentify& o) const;
+  bool operator!=(const BootloaderIdentify& o) const { return !(*this == o); }
+};
+
+// Robogene: which firmware runs on the board, and for which board it was built. (reply)
+struct BootloaderIdentifyReply {
+  static constexpr char name[] = "bootloader_identify_reply";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 1;
+  static constexpr std::uint8_t length = 8;  // data bytes (DLC)
+  BoardType board_type = BoardType::dsp;  // uint8
+  std::uint8_t board_id = 0;  // uint8
+  std::uint8_t revision = 0;  // uint8
+  FirmwareStage stage = FirmwareStage::application;  // uint8
+  bool image_valid = false;  // bool
+  std::uint8_t version_major = 0;  // uint8
+  std::uint8_t version_minor = 0;  // uint8
+  bool operator==(const BootloaderIdentifyReply& o) const;
+  bool operator!=(const BootloaderIdentifyReply& o) const { return !(*this == o); }
+};
+
+// Robogene: erase the application region for an image of `size` bytes and expect its first write (sequence 0). Answered once the pages are erased.
+struct BootloaderErase {
+  static constexpr char name[] = "bootloader_erase";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 2;
+  static constexpr std::uint8_t length = 5;  // data bytes (DLC)
+  std::uint32_t size = 0;  // uint32
+  bool operator==(const BootloaderErase& o) const;
+  bool operator!=(const BootloaderErase& o) const { return !(*this == o); }
+};
+
+// Robogene: erase the application region for an image of `size` bytes and expect its first write (sequence 0). Answered once the pages are erased. (reply)
+struct BootloaderEraseReply {
+  static constexpr char name[] = "bootloader_erase_reply";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 2;
+  static constexpr std::uint8_t length = 2;  // data bytes (DLC)
+  BootStatus status = BootStatus::ok;  // uint8
+  bool operator==(const BootloaderEraseReply& o) const;
+  bool operator!=(const BootloaderEraseReply& o) const { return !(*this == o); }
+};
+
+// Robogene: four image bytes at offset 4 x sequence. The reply acknowledges the sequence number; a gap is answered with bad_sequence and the sequence expected, a repeat of the last one is acknowledged again.
+struct BootloaderWrite {
+  static constexpr char name[] = "bootloader_write";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 3;
+  static constexpr std::uint8_t length = 7;  // data bytes (DLC)
+  std::uint16_t sequence = 0;  // uint16
+  std::uint32_t data = 0;  // uint32
+  bool operator==(const BootloaderWrite& o) const;
+  bool operator!=(const BootloaderWrite& o) const { return !(*this == o); }
+};
+
+// Robogene: four image bytes at offset 4 x sequence. The reply acknowledges the sequence number; a gap is answered with bad_sequence and the sequence expected, a repeat of the last one is acknowledged again. (reply)
+struct BootloaderWriteReply {
+  static constexpr char name[] = "bootloader_write_reply";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 3;
+  static constexpr std::uint8_t length = 4;  // data bytes (DLC)
+  std::uint16_t sequence = 0;  // uint16
+  BootStatus status = BootStatus::ok;  // uint8
+  bool operator==(const BootloaderWriteReply& o) const;
+  bool operator!=(const BootloaderWriteReply& o) const { return !(*this == o); }
+};
+
+// Robogene: check the written image: its header (this board, this revision, the size erased) and the CRC-32 of the flash against the header's.
+struct BootloaderVerify {
+  static constexpr char name[] = "bootloader_verify";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 5;
+  static constexpr std::uint8_t length = 1;  // data bytes (DLC)
+  bool operator==(const BootloaderVerify& o) const;
+  bool operator!=(const BootloaderVerify& o) const { return !(*this == o); }
+};
+
+// Robogene: check the written image: its header (this board, this revision, the size erased) and the CRC-32 of the flash against the header's. (reply)
+struct BootloaderVerifyReply {
+  static constexpr char name[] = "bootloader_verify_reply";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 5;
+  static constexpr std::uint8_t length = 6;  // data bytes (DLC)
+  BootStatus status = BootStatus::ok;  // uint8
+  std::uint32_t crc = 0;  // uint32
+  bool operator==(const BootloaderVerifyReply& o) const;
+  bool operator!=(const BootloaderVerifyReply& o) const { return !(*this == o); }
+};
+
+// Robogene: start the application, when the image checks; the board restarts into it.
+struct BootloaderStart {
+  static constexpr char name[] = "bootloader_start";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 6;
+  static constexpr std::uint8_t length = 1;  // data bytes (DLC)
+  bool operator==(const BootloaderStart& o) const;
+  bool operator!=(const BootloaderStart& o) const { return !(*this == o); }
+};
+
+// Robogene: start the application, when the image checks; the board restarts into it. (reply)
+struct BootloaderStartReply {
+  static constexpr char name[] = "bootloader_start_reply";
+  static constexpr MessageClass message_class = MessageClass::bootloader;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 6;
+  static constexpr std::uint8_t length = 2;  // data bytes (DLC)
+  BootStatus status = BootStatus::ok;  // uint8
+  bool operator==(const BootloaderStartReply& o) const;
+  bool operator!=(const BootloaderStartReply& o) const { return !(*this == o); }
+};
+
 using Message = std::variant<
     CalibrateEncoder,
     GetControlMode,
@@ -835,7 +1001,18 @@ using Message = std::variant<
     StatusBroadcast,
     CurrentBroadcast,
     VelocityBroadcast,
-    SupplyBroadcast
+    SupplyBroadcast,
+    EnterBootloader,
+    BootloaderIdentify,
+    BootloaderIdentifyReply,
+    BootloaderErase,
+    BootloaderEraseReply,
+    BootloaderWrite,
+    BootloaderWriteReply,
+    BootloaderVerify,
+    BootloaderVerifyReply,
+    BootloaderStart,
+    BootloaderStartReply
     >;
 
 // A message with its addresses. Commands go from the host to `destination`, replies from a

@@ -27,6 +27,9 @@ dump=$!
 suite 'CanHeadOverSocketCan*' --gtest_output="xml:$out/head-tests.xml"
 kill "$dump"; wait "$dump" 2>/dev/null
 
+echo "=== a firmware update over vcan0: can-flash against can-sim's bootloaders, interrupted and redone"
+suite 'CanFlashOverSocketCan*' --gtest_output="xml:$out/flash-tests.xml"
+
 echo "=== candump's own recording read back by robogene's candump reader"
 export ROBOGENE_CAN_CANDUMP_LOG="$out/candump-vcan0.log"
 suite 'CandumpInterop*'

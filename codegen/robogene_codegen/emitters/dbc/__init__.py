@@ -51,19 +51,24 @@ def _multiplexed(can_id: int, name: str, sender: str, receiver: str, messages: l
 def render(c: BoardConfig) -> str:
     p = c.protocol
     nodes = [HOST_NODE] + [node(b) for b in c.boards]
-    polling = next(cl for cl in p.classes if cl.addressing == "destination" and cl.messages)
-    requests = [m for m in polling.messages if m.kind == "request"]
-    replies = [m for m in polling.messages if m.kind == "reply"]
+    # The first command class keeps the plain names (HOST_TO_<BOARD>, <BOARD>_REPLY); later ones,
+    # such as the bootloader's, carry their class name.
+    command_classes = [cl for cl in p.classes if cl.addressing == "destination" and cl.messages]
     out: dict = {"signals": [], "commands": []}
     body, comments = [], []
     for b in c.boards:
         n = node(b)
-        req_id = (polling.value << 8) | (p.host << 4) | b.address
-        rep_id = (polling.value << 8) | (b.address << 4) | p.host
-        body += _multiplexed(req_id, f"{HOST_NODE}_TO_{n}", HOST_NODE, n, requests, out) + [""]
-        comments.append(f"CM_ BO_ {req_id} {_quote(f'Commands from the host to board {b.address} ({b.name}); command = code, axis = bit 7 of byte 0.')};")
-        body += _multiplexed(rep_id, f"{n}_REPLY", n, HOST_NODE, replies, out) + [""]
-        comments.append(f"CM_ BO_ {rep_id} {_quote(f'Replies of board {b.address} ({b.name}) to the host.')};")
+        for k, cl in enumerate(command_classes):
+            requests = [m for m in cl.messages if m.kind == "request"]
+            replies = [m for m in cl.messages if m.kind == "reply"]
+            suffix = "" if k == 0 else "_" + cl.name.upper()
+            what = "" if k == 0 else f" ({cl.name})"
+            req_id = (cl.value << 8) | (p.host << 4) | b.address
+            rep_id = (cl.value << 8) | (b.address << 4) | p.host
+            body += _multiplexed(req_id, f"{HOST_NODE}_TO_{n}{suffix}", HOST_NODE, n, requests, out) + [""]
+            comments.append(f"CM_ BO_ {req_id} {_quote(f'Commands{what} from the host to board {b.address} ({b.name}); command = code, axis = bit 7 of byte 0.')};")
+            body += _multiplexed(rep_id, f"{n}{suffix}_REPLY", n, HOST_NODE, replies, out) + [""]
+            comments.append(f"CM_ BO_ {rep_id} {_quote(f'Replies{what} of board {b.address} ({b.name}) to the host.')};")
         for m in p.broadcasts:
             cls = next(cl for cl in p.classes if cl.name == m.class_name)
             can_id = (cls.value << 8) | (b.address << 4) | m.code

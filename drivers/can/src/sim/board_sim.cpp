@@ -8,7 +8,11 @@
 
 #include "core_params.hpp"
 #include "rg_board.h"
+#include "rg_boot.h"
+#include "robogene/can/firmware_image.hpp"
+#include "robogene/can/sim/sim_flash.hpp"
 #include "robogene/error.hpp"
+#include "robogene_can_motor_control.h"
 
 namespace robogene::can::sim {
 
@@ -25,6 +29,14 @@ struct BoardSim::Model {
   double supply_volts = 12.0;
   bool bridge_fault = false;
   std::vector<rg_can_frame_t> sent;
+  // The bootloader, its flash and what the board runs; a stage change asked for by the firmware
+  // (enter_bootloader, bootloader_start) happens once the frame that asked is handled.
+  std::unique_ptr<SimFlash> flash;
+  rg_boot_hal_t boot_hal{};
+  rg_boot_t boot{};
+  rg_image_target_t target{};
+  bool in_bootloader = false;
+  enum class Switch { none, to_bootloader, to_application } pending = Switch::none;
 };
 
 namespace {
@@ -85,9 +97,44 @@ void place_stop(MotorParameters& mp, int direction, double motor_stop_degrees) {
   mp.stop_max = direction > 0 ? motor_stop_degrees : 1e9;
 }
 
+void enter_bootloader(void* ctx) { model_of(ctx).pending = Model::Switch::to_bootloader; }
+void start_application(void* ctx) { model_of(ctx).pending = Model::Switch::to_application; }
+bool flash_erase(void* ctx, std::uint32_t page) { return model_of(ctx).flash->erase_page(page); }
+bool flash_program(void* ctx, std::uint32_t offset, const std::uint8_t* data) {
+  return model_of(ctx).flash->program(offset, data);
+}
+bool flash_read(void* ctx, std::uint32_t offset, std::uint8_t* out, std::uint32_t len) {
+  return model_of(ctx).flash->read(offset, out, len);
+}
+
+// The board's reset: the bootloader starts the application when the image checks, else stays.
+void reset(Model& s) {
+  s.duty = {0.0, 0.0};
+  s.pending = Model::Switch::none;
+  s.in_bootloader = !rg_boot_image_valid(&s.boot_hal, &s.target);
+  if (s.in_bootloader) {
+    rg_boot_init(&s.boot, s.params.address, &s.target, &s.boot_hal);
+  } else {
+    rg_board_init(&s.core, &s.params, &s.hal);
+  }
+}
+
+void settle(Model& s) {
+  const Model::Switch what = s.pending;
+  s.pending = Model::Switch::none;
+  if (what == Model::Switch::to_bootloader) {
+    s.duty = {0.0, 0.0};
+    s.in_bootloader = true;
+    rg_boot_init(&s.boot, s.params.address, &s.target, &s.boot_hal);
+  } else if (what == Model::Switch::to_application) {
+    reset(s);  // the firmware resets; its reset path checks the image again
+  }
+}
+
 }  // namespace
 
-BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor)
+BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor,
+                   const std::string& flash_path)
     : model_(std::make_unique<Model>()) {
   Model& s = *model_;
   const rg_board_params_t p = core_params(head, board);
@@ -109,30 +156,45 @@ BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const Motor
     s.motors[i] = DcMotor(mp);
   }
   s.pwm_full_scale = head.pwm_full_scale;
-  s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr, nullptr};
+  s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr, nullptr,
+                   enter_bootloader};
   s.params = p;
-  rg_board_init(&s.core, &s.params, &s.hal);
+  s.target = rg_image_target_t{ROBOGENE_CAN_BOARD_TYPE_ROBOGENE_MOTOR_BOARD, p.board_id,
+                               static_cast<std::uint8_t>(board_revision())};
+  const std::vector<std::uint8_t> factory = make_stamped_image(p.board_id, s.target.revision, 12 * 1024);
+  s.flash = std::make_unique<SimFlash>(kApplicationRegionBytes, factory, flash_path);
+  s.boot_hal = rg_boot_hal_t{&s, kApplicationRegionBytes, SimFlash::kPageBytes, flash_erase, flash_program, flash_read,
+                             can_send, start_application};
+  reset(s);
 }
+
+bool BoardSim::in_bootloader() const { return model_->in_bootloader; }
+
+void BoardSim::power_cycle() { reset(*model_); }
 
 void BoardSim::power_up_at(double motor0_degrees, double motor1_degrees) {
   Model& s = *model_;
   s.motors[0].set_joint_degrees(motor0_degrees);
   s.motors[1].set_joint_degrees(motor1_degrees);
-  s.duty = {0.0, 0.0};
-  rg_board_init(&s.core, &s.params, &s.hal);
+  reset(s);
 }
 
 BoardSim::~BoardSim() = default;
 BoardSim::BoardSim(BoardSim&&) noexcept = default;
 BoardSim& BoardSim::operator=(BoardSim&&) noexcept = default;
 
-int BoardSim::address() const { return model_->core.address; }
+int BoardSim::address() const { return model_->in_bootloader ? model_->boot.address : model_->core.address; }
 
 std::optional<Envelope> BoardSim::handle(const Envelope& command) {
   Model& s = *model_;
   s.sent.clear();
   const rg_can_frame_t in = to_core(encode(command));
-  rg_board_receive(&s.core, &in);
+  if (s.in_bootloader) {
+    rg_boot_receive(&s.boot, &in);
+  } else {
+    rg_board_receive(&s.core, &in);
+  }
+  settle(s);
   if (s.sent.empty()) return std::nullopt;
   return decode(from_core(s.sent.front()));  // a command has at most one reply
 }
@@ -140,8 +202,8 @@ std::optional<Envelope> BoardSim::handle(const Envelope& command) {
 void BoardSim::step(double /*now*/, double dt, std::vector<Envelope>& out) {
   Model& s = *model_;
   s.sent.clear();
-  rg_board_tick(&s.core);
-  for (std::size_t m = 0; m < 2; ++m) s.motors[m].step(s.duty[m], dt);
+  if (!s.in_bootloader) rg_board_tick(&s.core);  // the bootloader leaves the bridges off
+  for (std::size_t m = 0; m < 2; ++m) s.motors[m].step(s.in_bootloader ? 0.0 : s.duty[m], dt);
   for (const auto& f : s.sent) out.push_back(decode(from_core(f)));
 }
 

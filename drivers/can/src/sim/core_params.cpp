@@ -55,6 +55,7 @@ double motor_counts_per_degree(const HeadConfig& head, const BoardConfig& board,
 rg_board_params_t core_params(const HeadConfig& head, const BoardConfig& board) {
   rg_board_params_t p{};
   p.address = static_cast<std::uint8_t>(board.address);
+  p.board_id = static_cast<std::uint8_t>(board.address);  // the head table's address: what its image is built for
   p.pwm_full_scale = static_cast<std::uint16_t>(head.pwm_full_scale);
   p.control_period_us = static_cast<std::uint32_t>(head.control_period_us);
   p.velocity_timeout_ms = static_cast<std::uint16_t>(head.velocity_timeout_ms);

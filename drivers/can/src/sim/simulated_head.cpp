@@ -13,11 +13,17 @@ constexpr int kMaxCatchUpTicks = 50;  // past this the loop gives up on real tim
 
 }  // namespace
 
-SimulatedHead::SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor)
+SimulatedHead::SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor,
+                             const std::string& flash_dir)
     : bus_(std::move(bus)), period_s_(head.control_period_us / 1e6) {
-  for (const auto& b : head.boards) boards_.emplace_back(head, b, motor);
-  // Commands and replies of the host (class 0, source 0): the only frames boards act on.
-  bus_->set_filters({{0x000, 0x7F0}});
+  for (const auto& b : head.boards) {
+    const std::string flash =
+        flash_dir.empty() ? "" : flash_dir + "/board-" + std::to_string(b.address) + "-" + b.name + ".flash";
+    boards_.emplace_back(head, b, motor, flash);
+  }
+  // The host's commands (source 0) of the motor-control and bootloader classes: the only frames
+  // boards act on.
+  bus_->set_filters({{0x000, 0x7F0}, {0x700, 0x7F0}});
   thread_ = std::thread([this] { loop(); });
 }
 
@@ -48,6 +54,16 @@ std::int32_t SimulatedHead::measured_counts(int address, int axis) {
 void SimulatedHead::power_up_at(int address, double motor0_degrees, double motor1_degrees) {
   std::lock_guard<std::mutex> lock(mutex_);
   board(address).power_up_at(motor0_degrees, motor1_degrees);
+}
+
+bool SimulatedHead::in_bootloader(int address) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).in_bootloader();
+}
+
+void SimulatedHead::power_cycle(int address) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).power_cycle();
 }
 
 void SimulatedHead::send(const Envelope& e) {

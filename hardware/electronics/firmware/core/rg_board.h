@@ -49,6 +49,7 @@ typedef struct {
 
 typedef struct {
   uint8_t address;
+  uint8_t board_id;              // the head-table address the firmware was built for (bootloader_identify)
   uint8_t coupling;              // RG_COUPLING_*
   int8_t counts_m2a[2][2];       // axis counts = counts_m2a x motor counts
   rg_axis_params_t axes[2];
@@ -113,6 +114,10 @@ void rg_board_note_overrun(rg_board_t *b);
 
 // Seconds of one control period.
 float rg_board_period_s(const rg_board_t *b);
+
+// The application's part of the bootloader class (rg_board_boot.c): bootloader_identify and
+// enter_bootloader, from the host to this board or to all.
+void rg_board_receive_bootloader(rg_board_t *b, const rg_can_frame_t *frame);
 
 // Used by the protocol and homing code.
 void rg_board_set_mode(rg_board_t *b, unsigned axis, uint8_t mode);

@@ -33,6 +33,7 @@ bool rg_board_params_for_address(uint8_t can_address, rg_board_params_t *out) {
   if (c == NULL) return false;
   memset(out, 0, sizeof *out);
   out->address = c->can_address;
+  out->board_id = c->can_address;
   out->coupling = (uint8_t)c->coupling;
   memcpy(out->counts_m2a, c->counts_m2a, sizeof out->counts_m2a);
   for (unsigned i = 0; i < 2u; ++i) axis_from_config(&c->axes[i], &out->axes[i]);

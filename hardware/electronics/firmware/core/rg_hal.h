@@ -43,6 +43,9 @@ typedef struct rg_hal {
   // The CAN controller's error counters and state (ROBOGENE_CAN_CAN_STATUS_* bits) for the status
   // broadcast; may be NULL (all zero).
   void (*can_errors)(void *ctx, uint8_t *tx_errors, uint8_t *rx_errors, uint8_t *status);
+  // Restart into the bootloader and stay there (enter_bootloader), the bridges already off; may be
+  // NULL (the command is then ignored). Called from rg_board_receive.
+  void (*enter_bootloader)(void *ctx);
 } rg_hal_t;
 
 #ifdef __cplusplus

@@ -250,6 +250,10 @@ void rg_board_receive(rg_board_t *b, const rg_can_frame_t *frame) {
   const unsigned message_class = (frame->id & ROBOGENE_CAN_MESSAGE_CLASS_MASK) >> ROBOGENE_CAN_MESSAGE_CLASS_SHIFT;
   const unsigned source = (frame->id & ROBOGENE_CAN_SOURCE_MASK) >> ROBOGENE_CAN_SOURCE_SHIFT;
   const unsigned destination = (frame->id & ROBOGENE_CAN_DESTINATION_MASK) >> ROBOGENE_CAN_DESTINATION_SHIFT;
+  if (message_class == ROBOGENE_CAN_CLASS_BOOTLOADER) {
+    rg_board_receive_bootloader(b, frame);
+    return;
+  }
   // Only the host's commands: other boards' replies and broadcasts share the bus.
   if (message_class != ROBOGENE_CAN_CLASS_POLLING_MOTOR_CONTROL || source != ROBOGENE_CAN_HOST_ADDRESS) return;
   if (destination != b->address && destination != ROBOGENE_CAN_BROADCAST_ADDRESS) return;

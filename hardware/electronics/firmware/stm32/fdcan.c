@@ -40,8 +40,11 @@ void fdcan_init(uint8_t address) {
   word_write(MRAM_FLS + 0u, classic_filter(ROBOGENE_CAN_ID(ROBOGENE_CAN_CLASS_POLLING_MOTOR_CONTROL, 0u, address), exact));
   word_write(MRAM_FLS + 4u, classic_filter(ROBOGENE_CAN_ID(ROBOGENE_CAN_CLASS_POLLING_MOTOR_CONTROL, 0u,
                                                            ROBOGENE_CAN_BROADCAST_ADDRESS), exact));
-  // Two standard filters; everything else, extended and remote frames included, is rejected.
-  FDCAN1_RXGFC = (2u << FDCAN1_RXGFC_LSS_Pos) | (2u << FDCAN1_RXGFC_ANFS_Pos) | (2u << FDCAN1_RXGFC_ANFE_Pos) |
+  word_write(MRAM_FLS + 8u, classic_filter(ROBOGENE_CAN_ID(ROBOGENE_CAN_CLASS_BOOTLOADER, 0u, address), exact));
+  word_write(MRAM_FLS + 12u,
+             classic_filter(ROBOGENE_CAN_ID(ROBOGENE_CAN_CLASS_BOOTLOADER, 0u, ROBOGENE_CAN_BROADCAST_ADDRESS), exact));
+  // Four standard filters; everything else, extended and remote frames included, is rejected.
+  FDCAN1_RXGFC = (4u << FDCAN1_RXGFC_LSS_Pos) | (2u << FDCAN1_RXGFC_ANFS_Pos) | (2u << FDCAN1_RXGFC_ANFE_Pos) |
                  FDCAN1_RXGFC_RRFS_Msk | FDCAN1_RXGFC_RRFE_Msk;
   FDCAN1_TXBC = 0u;  // TX FIFO mode
   FDCAN1_CCCR &= ~FDCAN1_CCCR_INIT_Msk;
@@ -80,6 +83,15 @@ bool fdcan_send(const rg_can_frame_t *frame) {
   word_write(element + 12u, d[1]);
   FDCAN1_TXBAR = 1u << index;
   return true;
+}
+
+bool fdcan_flush(uint32_t max_us) {
+  // TFFL counts the free elements of the 3-element TX FIFO. A pass takes at least 50 ns at 150 MHz
+  // (longer on the bootloader's 16 MHz): max_us bounds the wait, it does not time it.
+  for (uint32_t n = 0; n < max_us * 20u; ++n) {
+    if (((FDCAN1_TXFQS & FDCAN1_TXFQS_TFFL_Msk) >> FDCAN1_TXFQS_TFFL_Pos) == 3u) return true;
+  }
+  return false;
 }
 
 bool fdcan_recover(void) {

@@ -12,6 +12,7 @@
 #include "clock.h"
 #include "fdcan.h"
 #include "gpio.h"
+#include "handoff.h"
 #include "motor_io.h"
 #include "rg_board.h"
 #include "rg_board_config.h"
@@ -61,8 +62,16 @@ static void hal_can_errors(void *ctx, uint8_t *tx, uint8_t *rx, uint8_t *status)
   fdcan_errors(tx, rx, status);
 }
 
-static const rg_hal_t hal = {0,         hal_encoder, hal_current,      hal_supply,    hal_fault,
-                             hal_pwm,   hal_send,    hal_save_address, hal_can_errors};
+// enter_bootloader: the core has switched the bridges off; let the reply-less command's frame
+// go, then reset with the request to stay in the bootloader.
+static void hal_enter_bootloader(void *ctx) {
+  (void)ctx;
+  fdcan_flush(1000u);
+  handoff_reset_into_bootloader();
+}
+
+static const rg_hal_t hal = {0,       hal_encoder, hal_current,      hal_supply,     hal_fault,           hal_pwm,
+                             hal_send, hal_save_address, hal_can_errors, hal_enter_bootloader};
 
 static bool axes_at_rest(void) {
   for (unsigned i = 0; i < 2u; ++i) {

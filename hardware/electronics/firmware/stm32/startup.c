@@ -12,6 +12,8 @@ extern uint32_t _stack_top, _data_load, _data_start, _data_end, _bss_start, _bss
 int main(void);
 void rg_reset_handler(void);
 
+static void (*const vectors[16 + 102])(void);
+
 static void trap(void) {
   for (;;) {
   }
@@ -21,6 +23,8 @@ void rg_reset_handler(void) {
   const uint32_t *from = &_data_load;
   for (uint32_t *to = &_data_start; to < &_data_end;) *to++ = *from++;
   for (uint32_t *to = &_bss_start; to < &_bss_end;) *to++ = 0u;
+  // Exceptions through this image's own table: the application's is not where the part boots.
+  SCB_VTOR = (uint32_t)(uintptr_t)&vectors;
   SCB_CPACR |= 0xFu << 20;  // CP10 and CP11 (the FPU): full access, before any float instruction
   __asm__ volatile("dsb\n isb" ::: "memory");
   (void)main();

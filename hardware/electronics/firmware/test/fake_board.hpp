@@ -48,6 +48,7 @@ struct FakeBoard {
   bool fault = false;
   std::vector<rg_can_frame_t> sent;
   std::vector<int> saved_addresses;
+  int bootloader_requests = 0;
 
   static FakeBoard& of(void* ctx) { return *static_cast<FakeBoard*>(ctx); }
 
@@ -91,15 +92,17 @@ struct FakeBoard {
       return true;
     };
     hal.save_address = [](void* c, std::uint8_t a) { of(c).saved_addresses.push_back(a); };
+    hal.enter_bootloader = [](void* c) { ++of(c).bootloader_requests; };
   }
   FakeBoard(const FakeBoard&) = delete;
 
   void start() { rg_board_init(&core, &params, &hal); }
 
   // Sends a host command; returns the reply, if any.
-  std::optional<rg_can_frame_t> command(std::vector<std::uint8_t> bytes, unsigned axis = 0, unsigned dst = 1) {
+  std::optional<rg_can_frame_t> command(std::vector<std::uint8_t> bytes, unsigned axis = 0, unsigned dst = 1,
+                                        unsigned message_class = ROBOGENE_CAN_CLASS_POLLING_MOTOR_CONTROL) {
     rg_can_frame_t f{};
-    f.id = static_cast<std::uint16_t>(ROBOGENE_CAN_ID(0, 0, dst));
+    f.id = static_cast<std::uint16_t>(ROBOGENE_CAN_ID(message_class, 0, dst));
     f.len = static_cast<std::uint8_t>(bytes.size());
     std::memcpy(f.data, bytes.data(), bytes.size());
     if (axis) f.data[0] |= ROBOGENE_CAN_AXIS_BIT;

@@ -16,11 +16,11 @@ import re
 from dataclasses import dataclass
 from typing import ClassVar, NamedTuple, Optional, Union
 
-__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BroadcastMask", "BroadcastType", "CalibrateEncoder", "CalibrationType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "Envelope", "FIRST_BOARD_ADDRESS", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
+__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BootStatus", "BootloaderErase", "BootloaderEraseReply", "BootloaderIdentify", "BootloaderIdentifyReply", "BootloaderStart", "BootloaderStartReply", "BootloaderVerify", "BootloaderVerifyReply", "BootloaderWrite", "BootloaderWriteReply", "BroadcastMask", "BroadcastType", "CalibrateEncoder", "CalibrationType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "EnterBootloader", "Envelope", "FIRST_BOARD_ADDRESS", "FirmwareStage", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
 
 PROTOCOL_NAME = "motor_control"
 # First 16 hex digits of the SHA-256 of the protocol's canonical form.
-PROTOCOL_FINGERPRINT = "4cbe3ad6bb6add3d"
+PROTOCOL_FINGERPRINT = "250b8f75f4216175"
 PROTOCOL_MAJOR = 1
 PROTOCOL_MINOR = 0
 BITRATE = 1000000  # bit/s
@@ -60,7 +60,7 @@ class MessageClass(enum.IntEnum):
     PERIODIC_SKIN = 4  # Reserved (skin).
     PERIODIC_INERTIAL_SENSOR = 5  # Reserved (IMU).
     PERIODIC_BATTERY = 6  # Reserved (battery).
-    BOOTLOADER = 7  # Reserved (firmware update).
+    BOOTLOADER = 7  # Robogene: firmware update over the bus. The application answers bootloader_identify and enter_bootloader; the bootloader, in its own flash region, answers them all. The image is written 4 bytes a frame, each acknowledged, and must carry the header the build stamps (board, revision, size, CRC-32) before the bootloader starts it.
 
 
 class ControlMode(enum.IntEnum):
@@ -99,6 +99,28 @@ class BoardType(enum.IntEnum):
     MC4_4DC = 3
     ROBOGENE_MOTOR_BOARD = 200  # Robogene's two-motor head board.
     UNKNOWN = 255
+
+
+class FirmwareStage(enum.IntEnum):
+    """Robogene: which firmware answers bootloader_identify."""
+
+    APPLICATION = 0
+    BOOTLOADER = 1
+
+
+class BootStatus(enum.IntEnum):
+    """Robogene: the bootloader's answer to an update step."""
+
+    OK = 0
+    BAD_STATE = 1  # Not now (a write before an erase, a verify before the last write).
+    BAD_SEQUENCE = 2  # A write out of order; its reply names the sequence expected.
+    OUT_OF_RANGE = 3  # Beyond the application region or the size erased.
+    FLASH_ERROR = 4  # The flash reported an error erasing or programming.
+    BAD_HEADER = 5  # No image header, or one that does not describe this image.
+    WRONG_BOARD = 6  # The image was built for another board.
+    WRONG_REVISION = 7  # The image was built for another board revision.
+    CRC_MISMATCH = 8  # The flash does not hold the image the header describes.
+    NO_IMAGE = 9  # No valid image to start.
 
 
 class AxisFaults(enum.IntFlag):
@@ -170,6 +192,12 @@ class Command(enum.IntEnum):
     GET_POSITION_PID_LIMITS = 85
     SET_VELOCITY_TIMEOUT = 86
     GET_FIRMWARE_VERSION = 91
+    ENTER_BOOTLOADER = 0
+    BOOTLOADER_IDENTIFY = 1
+    BOOTLOADER_ERASE = 2
+    BOOTLOADER_WRITE = 3
+    BOOTLOADER_VERIFY = 5
+    BOOTLOADER_START = 6
 
 
 class BroadcastType(enum.IntEnum):
@@ -847,9 +875,158 @@ class SupplyBroadcast:
     voltage: float = 0.0
 
 
-Message = Union[CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast]
+@dataclass
+class EnterBootloader:
+    """Robogene: restart into the bootloader and stay there. The application stops its motors first; a wrong key is ignored, so that no stray frame restarts a running board."""
 
-MESSAGES = {m.NAME: m for m in (CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, )}
+    NAME: ClassVar[str] = "enter_bootloader"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 0
+    LENGTH: ClassVar[int] = 5
+    FIELDS: ClassVar[tuple] = (        _Field("key", "int", 1, 4, False, 1.0, 0.0, "", None),    )
+    key: int = 0
+
+
+@dataclass
+class BootloaderIdentify:
+    """Robogene: which firmware runs on the board, and for which board it was built."""
+
+    NAME: ClassVar[str] = "bootloader_identify"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 1
+    LENGTH: ClassVar[int] = 1
+    FIELDS: ClassVar[tuple] = (    )
+
+
+@dataclass
+class BootloaderIdentifyReply:
+    """Robogene: which firmware runs on the board, and for which board it was built. (reply)"""
+
+    NAME: ClassVar[str] = "bootloader_identify_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 1
+    LENGTH: ClassVar[int] = 8
+    FIELDS: ClassVar[tuple] = (        _Field("board_type", "enum", 1, 1, False, 1.0, 0.0, "", BoardType),        _Field("board_id", "int", 2, 1, False, 1.0, 0.0, "", None),        _Field("revision", "int", 3, 1, False, 1.0, 0.0, "", None),        _Field("stage", "enum", 4, 1, False, 1.0, 0.0, "", FirmwareStage),        _Field("image_valid", "bool", 5, 1, False, 1.0, 0.0, "", None),        _Field("version_major", "int", 6, 1, False, 1.0, 0.0, "", None),        _Field("version_minor", "int", 7, 1, False, 1.0, 0.0, "", None),    )
+    board_type: BoardType = BoardType.DSP
+    board_id: int = 0
+    revision: int = 0
+    stage: FirmwareStage = FirmwareStage.APPLICATION
+    image_valid: bool = False
+    version_major: int = 0
+    version_minor: int = 0
+
+
+@dataclass
+class BootloaderErase:
+    """Robogene: erase the application region for an image of `size` bytes and expect its first write (sequence 0). Answered once the pages are erased."""
+
+    NAME: ClassVar[str] = "bootloader_erase"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 2
+    LENGTH: ClassVar[int] = 5
+    FIELDS: ClassVar[tuple] = (        _Field("size", "int", 1, 4, False, 1.0, 0.0, "", None),    )
+    size: int = 0
+
+
+@dataclass
+class BootloaderEraseReply:
+    """Robogene: erase the application region for an image of `size` bytes and expect its first write (sequence 0). Answered once the pages are erased. (reply)"""
+
+    NAME: ClassVar[str] = "bootloader_erase_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 2
+    LENGTH: ClassVar[int] = 2
+    FIELDS: ClassVar[tuple] = (        _Field("status", "enum", 1, 1, False, 1.0, 0.0, "", BootStatus),    )
+    status: BootStatus = BootStatus.OK
+
+
+@dataclass
+class BootloaderWrite:
+    """Robogene: four image bytes at offset 4 x sequence. The reply acknowledges the sequence number; a gap is answered with bad_sequence and the sequence expected, a repeat of the last one is acknowledged again."""
+
+    NAME: ClassVar[str] = "bootloader_write"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 3
+    LENGTH: ClassVar[int] = 7
+    FIELDS: ClassVar[tuple] = (        _Field("sequence", "int", 1, 2, False, 1.0, 0.0, "", None),        _Field("data", "int", 3, 4, False, 1.0, 0.0, "", None),    )
+    sequence: int = 0
+    data: int = 0
+
+
+@dataclass
+class BootloaderWriteReply:
+    """Robogene: four image bytes at offset 4 x sequence. The reply acknowledges the sequence number; a gap is answered with bad_sequence and the sequence expected, a repeat of the last one is acknowledged again. (reply)"""
+
+    NAME: ClassVar[str] = "bootloader_write_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 3
+    LENGTH: ClassVar[int] = 4
+    FIELDS: ClassVar[tuple] = (        _Field("sequence", "int", 1, 2, False, 1.0, 0.0, "", None),        _Field("status", "enum", 3, 1, False, 1.0, 0.0, "", BootStatus),    )
+    sequence: int = 0
+    status: BootStatus = BootStatus.OK
+
+
+@dataclass
+class BootloaderVerify:
+    """Robogene: check the written image: its header (this board, this revision, the size erased) and the CRC-32 of the flash against the header's."""
+
+    NAME: ClassVar[str] = "bootloader_verify"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 5
+    LENGTH: ClassVar[int] = 1
+    FIELDS: ClassVar[tuple] = (    )
+
+
+@dataclass
+class BootloaderVerifyReply:
+    """Robogene: check the written image: its header (this board, this revision, the size erased) and the CRC-32 of the flash against the header's. (reply)"""
+
+    NAME: ClassVar[str] = "bootloader_verify_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 5
+    LENGTH: ClassVar[int] = 6
+    FIELDS: ClassVar[tuple] = (        _Field("status", "enum", 1, 1, False, 1.0, 0.0, "", BootStatus),        _Field("crc", "int", 2, 4, False, 1.0, 0.0, "", None),    )
+    status: BootStatus = BootStatus.OK
+    crc: int = 0
+
+
+@dataclass
+class BootloaderStart:
+    """Robogene: start the application, when the image checks; the board restarts into it."""
+
+    NAME: ClassVar[str] = "bootloader_start"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 6
+    LENGTH: ClassVar[int] = 1
+    FIELDS: ClassVar[tuple] = (    )
+
+
+@dataclass
+class BootloaderStartReply:
+    """Robogene: start the application, when the image checks; the board restarts into it. (reply)"""
+
+    NAME: ClassVar[str] = "bootloader_start_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.BOOTLOADER
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 6
+    LENGTH: ClassVar[int] = 2
+    FIELDS: ClassVar[tuple] = (        _Field("status", "enum", 1, 1, False, 1.0, 0.0, "", BootStatus),    )
+    status: BootStatus = BootStatus.OK
+
+
+Message = Union[CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply]
+
+MESSAGES = {m.NAME: m for m in (CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply, )}
 _COMMANDS = {(m.MESSAGE_CLASS, m.CODE, m.KIND): m for m in MESSAGES.values() if m.KIND != "broadcast"}
 _BROADCASTS = {(m.MESSAGE_CLASS, m.CODE): m for m in MESSAGES.values() if m.KIND == "broadcast"}
 _ADDRESSED_BY_DESTINATION = {MessageClass.POLLING_MOTOR_CONTROL, MessageClass.POLLING_ANALOG_SENSOR, MessageClass.BOOTLOADER}

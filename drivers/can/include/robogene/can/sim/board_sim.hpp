@@ -11,6 +11,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "motor_control.hpp"
@@ -22,8 +23,13 @@ namespace robogene::can::sim {
 class BoardSim {
  public:
   // Throws robogene::Error when the board's configuration cannot be run by the firmware (a
-  // coupling it does not implement).
-  BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor);
+  // coupling it does not implement). The board's application region of flash is kept in
+  // `flash_path` when given (see SimFlash), else in memory; at first power-up it holds an image
+  // stamped for this board (make_stamped_image: the simulator runs the control core natively, so
+  // the image's code is filler). At power-up the board runs its application when that region
+  // holds an image for it that checks (header and CRC), else its bootloader, as on the board.
+  BoardSim(const HeadConfig& head, const BoardConfig& board, const MotorParameters& motor,
+           const std::string& flash_path = {});
   ~BoardSim();
   BoardSim(BoardSim&&) noexcept;
   BoardSim& operator=(BoardSim&&) noexcept;
@@ -45,6 +51,10 @@ class BoardSim {
   // as a board without absolute encoders does until it homes.
   void power_up_at(double motor0_degrees, double motor1_degrees);
   void set_bridge_fault(bool asserted);
+  // The bootloader runs (after enter_bootloader, or at power-up without a valid image).
+  bool in_bootloader() const;
+  // A power cycle: the reset path of the bootloader decides what runs.
+  void power_cycle();
 
   struct Model;
 

@@ -23,8 +23,10 @@ namespace robogene::can::sim {
 
 class SimulatedHead {
  public:
-  // Starts the control loop at once.
-  SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor = {});
+  // Starts the control loop at once. With a `flash_dir`, each board keeps its application region
+  // of flash in <flash_dir>/board-<address>-<name>.flash across runs (BoardSim, SimFlash).
+  SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor = {},
+                const std::string& flash_dir = {});
   ~SimulatedHead();
   SimulatedHead(const SimulatedHead&) = delete;
   SimulatedHead& operator=(const SimulatedHead&) = delete;
@@ -35,6 +37,9 @@ class SimulatedHead {
   std::int32_t measured_counts(int board, int axis);
   // A power-on reset of one board with its motors at these joint-side angles (BoardSim::power_up_at).
   void power_up_at(int board, double motor0_degrees, double motor1_degrees);
+  // Whether a board runs its bootloader, and a power cycle of it (BoardSim::power_cycle).
+  bool in_bootloader(int board);
+  void power_cycle(int board);
   // Control periods run so far, and how many frames were not commands the boards understood.
   std::uint64_t ticks() const { return ticks_; }
   std::uint64_t rejected_frames() const { return rejected_; }
