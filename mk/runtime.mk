@@ -6,10 +6,10 @@
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
 RUNTIME_SOURCES := $(shell find runtime -type f -not -path '*/__pycache__/*' 2>/dev/null) CMakeLists.txt pyproject.toml
 
-$(BUILD)/build.ninja: CMakeLists.txt runtime/CMakeLists.txt $(STAMPS)/apt-runtime
+$(BUILD)/build.ninja: CMakeLists.txt runtime/CMakeLists.txt runtime/layers.cmake $(STAMPS)/apt-runtime
 	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE)
 
-.PHONY: runtime python python-stub test-cpp test-python bench
+.PHONY: runtime python python-stub test-cpp test-python test-layering bench
 runtime: $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
@@ -30,14 +30,20 @@ test-cpp: runtime
 test-python: python runtime
 	$(PY) -m pytest -q -p no:cacheprovider tests/python
 
+# The runtime's layers are one way: CMake's target graph, every include, and a planted upward
+# include that must fail the build (tests/layering, docs/architecture.md).
+test-layering: $(VENV)/.stamp $(STAMPS)/apt-runtime
+	$(PY) -m pytest -q -p no:cacheprovider tests/layering
+
 bench: runtime python
 	$(PY) runtime/bench/run_benchmarks.py --build $(BUILD)
 
 ALL_TARGETS  += runtime python
-TEST_TARGETS += test-cpp test-python
+TEST_TARGETS += test-cpp test-python test-layering
 HELP_LINES   += "make runtime    build the C++ runtime, CLI and unit tests into build/" \
                 "make python     build and install the Python package into .venv" \
                 "make python-stub regenerate runtime/python/robogene/_core.pyi from the built module" \
                 "make test-cpp   run the C++ unit tests (ctest)" \
                 "make test-python run the Python tests" \
+                "make test-layering check that the runtime's layers depend one way" \
                 "make bench      run the benchmarks and print ratios against raw sockets"

@@ -18,7 +18,7 @@ import robogene
 ROOT = Path(__file__).resolve().parents[2]
 OUT = ROOT / "runtime" / "fuzz" / "corpus"
 
-# tcp frames of `yarp write /w` -> /r and `yarp rpc` (runtime/test/carrier/tcp_carrier_test.cpp).
+# tcp frames of `yarp write /w` -> /r and `yarp rpc` (runtime/carriers/test/carrier/tcp_carrier_test.cpp).
 TCP_MESSAGE = ("59 41 0a 00 00 00 52 50 02 01 ff ff ff ff ff ff ff ff 08 00 00 00 2e 00 00 00 00 00 00 00 00 00"
                "00 00 7e 44 00 01 00 01 00 00 04 00 00 00 01 00 00 00 01 00 00 00 0a 00 00 00 00 00 00 00"
                "00 00 04 40 04 00 00 00 02 00 00 00 68 69 09 00 00 00 73 65 74 00")

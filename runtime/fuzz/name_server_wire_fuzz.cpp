@@ -10,52 +10,30 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <thread>
 
 #include "robogene/error.hpp"
 #include "robogene/log.hpp"
-#include "robogene/name/name_server.hpp"
-#include "robogene/name/registry.hpp"
-#include "robogene/net/tcp_listener.hpp"
+#include "robogene/name/local_name_server.hpp"
+#include "robogene/net/tcp_stream.hpp"
 
 using namespace robogene;
 
 namespace {
 
-struct Server {
-  name::Registry db{":memory:"};
-  name::NameService service;
-  name::NameServer server;
-  std::thread thread;
-
-  static name::NameServerLimits limits() {
-    name::NameServerLimits l;
-    l.handshake_timeout_ms = 200;
-    l.idle_timeout_ms = 200;
-    l.write_timeout_ms = 200;
-    return l;
-  }
-  static net::TcpListener& bound() {
-    static net::TcpListener l = net::TcpListener::listen({"127.0.0.1", 0});
-    return l;
-  }
-  static name::NameServiceConfig config() {
-    name::NameServiceConfig c;
-    c.host = "127.0.0.1";
-    c.port = bound().local().port;
-    return c;
-  }
-  Server() : service(db, config(), nullptr), server(service, std::move(bound()), limits()) {
-    log::set_level(log::Level::Off);
-    thread = std::thread([this] { server.run(); });
-  }
-};
+name::LocalNameServer* start_server() {
+  log::set_level(log::Level::Off);
+  name::LocalNameServerOptions o;
+  o.limits.handshake_timeout_ms = 200;
+  o.limits.idle_timeout_ms = 200;
+  o.limits.write_timeout_ms = 200;
+  return new name::LocalNameServer(o);
+}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static Server* s = new Server;  // lives for the whole run: one server, many sessions
-  net::TcpStream peer = net::TcpStream::connect({"127.0.0.1", s->service.config().port});
+  static name::LocalNameServer* s = start_server();  // lives for the whole run: one server, many sessions
+  net::TcpStream peer = net::TcpStream::connect(s->contact());
   peer.set_read_timeout(net::Millis(5000));
   try {
     peer.write_all(data, size);

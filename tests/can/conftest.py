@@ -12,6 +12,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
+# Every runtime layer's public headers (runtime/layers.cmake).
+RUNTIME_INCLUDES = [ROOT / "runtime" / "include", *sorted((ROOT / "runtime").glob("*/include"))]
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT / "codegen"))
 
@@ -82,7 +84,7 @@ class CodecTool:
 def cpp(build_dir):
     gen = ROOT / "drivers" / "can" / "generated"
     exe = compile_cxx([HERE / "codec_tool.cpp", gen / "motor_control.cpp"], build_dir / "codec_tool",
-                      [gen, ROOT / "drivers" / "can" / "include", ROOT / "runtime" / "include"])
+                      [gen, ROOT / "drivers" / "can" / "include", *RUNTIME_INCLUDES])
     tool = CodecTool(exe)
     yield tool
     tool.close()
@@ -92,8 +94,9 @@ def cpp(build_dir):
 def property_tool(build_dir):
     """The runtime's Property ini reader (runtime/src/dev/property*.cpp) in a small program."""
     src = ROOT / "runtime" / "src"
-    sources = [HERE / "property_tool.cpp", *sorted((src / "bottle").glob("*.cpp")),
+    bottle = ROOT / "runtime" / "bottle" / "src"
+    sources = [HERE / "property_tool.cpp", *sorted(bottle.glob("*.cpp")),
                src / "dev" / "property.cpp", src / "dev" / "property_sources.cpp", src / "dev" / "searchable.cpp"]
     # The runtime's warnings are the runtime build's business; here only the reading is tested.
-    return compile_cxx(sources, build_dir / "property_tool", [ROOT / "runtime" / "include", src],
+    return compile_cxx(sources, build_dir / "property_tool", [*RUNTIME_INCLUDES, bottle],
                        warnings_are_errors=False)

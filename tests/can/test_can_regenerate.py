@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from conftest import CXX, ROOT
+from conftest import CXX, ROOT, RUNTIME_INCLUDES
 from robogene_codegen.__main__ import main
 
 # The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
@@ -73,7 +73,7 @@ def test_added_command_reaches_every_output(tree, capsys, tmp_path):
                      "static_assert(robogene::can::GetSupplyVoltageReply::length == 3, \"length\");\n")
     for src in (probe, gen / "motor_control.cpp"):
         result = subprocess.run([CXX, "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra", "-Werror", f"-I{gen}",
-                                 f"-I{ROOT / 'drivers/can/include'}", f"-I{ROOT / 'runtime/include'}", str(src)],
+                                 f"-I{ROOT / 'drivers/can/include'}", *(f"-I{p}" for p in RUNTIME_INCLUDES), str(src)],
                                 capture_output=True, text=True, timeout=300)
         assert result.returncode == 0, result.stderr
 

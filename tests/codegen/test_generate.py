@@ -18,6 +18,17 @@ from robogene_codegen.generate import OWNED_DIRS, render
 ROOT = Path(__file__).resolve().parents[2]
 
 
+def runtime_include_dirs(root: Path) -> list:
+    """The public include folder of every runtime layer (runtime/layers.cmake): the device layer's
+    runtime/include and runtime/<layer>/include."""
+    return [root / "runtime" / "include",
+            *sorted(p for p in (root / "runtime").glob("*/include") if p.parent.name != "testing")]
+
+
+def runtime_include_flags(root: Path) -> list:
+    return [f"-I{p}" for p in runtime_include_dirs(root)]
+
+
 def make_copy(tmp_path: Path) -> Path:
     """A minimal tree: the IDL, the committed generated files and what they include."""
     root = tmp_path / "tree"
@@ -25,8 +36,9 @@ def make_copy(tmp_path: Path) -> Path:
     for d in OWNED_DIRS:
         if (ROOT / d).is_dir():
             shutil.copytree(ROOT / d, root / d, ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copytree(ROOT / "runtime" / "include", root / "runtime" / "include", dirs_exist_ok=True)
-    shutil.copytree(ROOT / "runtime" / "src" / "bottle", root / "runtime" / "src" / "bottle")
+    for include in runtime_include_dirs(ROOT):
+        shutil.copytree(include, root / include.relative_to(ROOT), dirs_exist_ok=True)
+    shutil.copytree(ROOT / "runtime" / "bottle" / "src", root / "runtime" / "bottle" / "src")
     shutil.copy(ROOT / "runtime" / "src" / "dev" / "rpc_codec.cpp", root / "runtime" / "src" / "dev")
     shutil.copytree(ROOT / "runtime" / "python" / "robogene" / "dev",
                     root / "runtime" / "python" / "robogene" / "dev", dirs_exist_ok=True,
@@ -169,7 +181,7 @@ def test_a_method_added_to_the_idl_reaches_cpp_and_python(tmp_path, capsys):
     """))
     exe = tmp_path / "use"
     cc = subprocess.run(["g++", "-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                         "-I", str(root / "runtime/include"), str(src), "-o", str(exe)],
+                         *runtime_include_flags(root), str(src), "-o", str(exe)],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
     assert subprocess.run([str(exe)]).returncode == 0
@@ -182,7 +194,7 @@ def test_generated_cpp_headers_compile_cleanly(tmp_path):
                    'static_assert(robogene::dev::vocabs::v_pos == 7565168, "[pos]");\n'
                    'int main() { return 0; }\n')
     cc = subprocess.run(["g++", "-std=c++17", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                         "-fsyntax-only", "-I", str(ROOT / "runtime/include"), str(src)],
+                         "-fsyntax-only", *runtime_include_flags(ROOT), str(src)],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
 
@@ -256,11 +268,14 @@ def robogene_binary() -> Path:
     return path
 
 
-def core_library() -> Path:
-    """The C++ runtime built by `make runtime`, beside the robogene binary the tests use."""
-    lib = robogene_binary().resolve().parents[1] / "runtime" / "librobogene_core.a"
-    assert lib.is_file(), f"{lib} missing: build the runtime first (make runtime)"
-    return lib
+def messaging_libraries() -> list:
+    """The messaging layers of the C++ runtime built by `make runtime` (ports down to base, in link
+    order), beside the robogene binary the tests use."""
+    libs = [robogene_binary().resolve().parents[1] / "runtime" / f"librobogene_{layer}.a"
+            for layer in ("ports", "carriers", "bottle", "base")]
+    for lib in libs:
+        assert lib.is_file(), f"{lib} missing: build the runtime first (make runtime)"
+    return libs
 
 
 def private_yarp_env(tmp_path: Path) -> dict:
@@ -312,12 +327,12 @@ def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path, capsys):
                str(root / "runtime/src/dev/rpc_codec.cpp"), str(src)]
     exe = tmp_path / "server_main"
     cc = subprocess.run(["g++", "-std=c++17", "-O0", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                         "-I", str(root / "runtime/include"), *sources, str(core_library()),
+                         *runtime_include_flags(root), *sources, *map(str, messaging_libraries()),
                          "-lsqlite3", "-pthread", "-o", str(exe), f"-Wl,-Map={tmp_path / 'server.map'}"],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
-    # The archive's device objects were built from the old interfaces: none may be linked in.
-    linked = set(re.findall(r"librobogene_core\.a\(([^)]+)\)", (tmp_path / "server.map").read_text()))
+    # The device layer's objects were built from the old interfaces: none may be linked in.
+    linked = set(re.findall(r"librobogene_\w+\.a\(([^)]+)\)", (tmp_path / "server.map").read_text()))
     assert "port.cpp.o" in linked
     assert not linked & {f"{p.name}.o" for p in (ROOT / "runtime/src/dev").rglob("*.cpp")}, linked
 

@@ -3,7 +3,7 @@
 """YARP 3's PID offset, enable, disable and reset requests over RPC against the Python test_motor:
 the replies in the shapes of RPCMessagesParser::handlePidMsg, and the model's behaviour through the
 generated client, bytes and the table-driven server. The C++ twin is
-runtime/test/dev/pid_switches_rpc_test.cpp."""
+drivers/fake/test/framework/pid_switches_rpc_test.cpp."""
 import math
 
 import pytest

@@ -16,7 +16,7 @@ from robogene.dev.generated.clients import ControlboardClient
 from robogene.dev.rpc import RpcServer
 
 # (typed at yarp rpc, request bytes, reply bytes) from the capture; see the C++ twin
-# runtime/test/dev/controlboard_server_test.cpp for the one deliberate difference ([vel] modes).
+# drivers/fake/test/framework/controlboard_server_test.cpp for the one deliberate difference ([vel] modes).
 SESSION = [
     ("get axes", "0401000002000000030000006765740400000061786573",
      "000100000700000009000000697300000400000004000000617865730100000004000000090000007473746101000000000000000a0000004a7cad51a2c0da41090000006f6b0000"),

@@ -49,7 +49,7 @@ def test_malformed_bytes_name_the_offset(case):
     assert case["message"] in str(err.value)
 
 
-# What real YARP 3.5 produced (see runtime/test/bottle/yarp_vectors_test.cpp, its C++ twin):
+# What real YARP 3.5 produced (see runtime/bottle/test/yarp_vectors_test.cpp, its C++ twin):
 # our parser gives YARP's bytes, our decoder YARP's rendering, re-encoding the same bytes.
 YARP = load("yarp3_bottles.json")
 YARP_OK = [c for c in YARP if not c["name"].startswith("malformed_")]

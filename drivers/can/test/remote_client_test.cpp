@@ -18,39 +18,15 @@
 #include "robogene/dev/generated/ipositioncontrol.hpp"
 #include "robogene/dev/generated/ivelocitycontrol.hpp"
 #include "robogene/dev/poly_driver.hpp"
-#include "robogene/name/name_server.hpp"
-#include "robogene/name/name_service.hpp"
-#include "robogene/name/registry.hpp"
-#include "robogene/net/tcp_listener.hpp"
+#include "robogene/name/local_name_server.hpp"
 #include "test_bus_dir.hpp"
 
 namespace robogene::can {
 namespace {
 
-// A name server on a free loopback port, in this process.
-struct LoopbackNameServer {
-  name::Registry registry{":memory:"};
-  net::TcpListener listener = net::TcpListener::listen({"127.0.0.1", 0});
-  int port = listener.local().port;
-  name::NameService service{registry,
-                            [this] {
-                              name::NameServiceConfig c;
-                              c.port = port;
-                              return c;
-                            }(),
-                            nullptr};
-  name::NameServer server{service, std::move(listener)};
-  std::thread thread{[this] { server.run(); }};
-  ~LoopbackNameServer() {
-    server.stop();
-    thread.join();
-  }
-  std::string address() const { return "127.0.0.1:" + std::to_string(port); }
-};
-
 TEST(CanHeadRemoteClient, MovesEveryJointThroughTheNetworkWithEncodersTracking) {
   testing::TempBusDir dir;
-  LoopbackNameServer ns;
+  name::LocalNameServer ns;
   const HeadConfig head = testing::head_config();
   sim::SimulatedHead sim(head, std::make_unique<VirtualBus>("remote"));
 
