@@ -135,9 +135,6 @@ def test_renders_show_something(fab):
 # A no-op rebuild still builds all 154 parts to hash them: past the default 120 s on a 2-core machine since the
 # assembly grew (harness, stops, circlips), so it carries a longer timeout.
 @pytest.mark.timeout(600)
-# Known bug, open on issue 9: on a package built from nothing, a second build redraws a few drawings and assembly-step
-# pictures (their cache keys are not yet stable across a fresh and a cached build).
-@pytest.mark.xfail(reason="fresh-then-rebuilt package redraws some drawings and step pictures (issue 9)", strict=False)
 def test_second_build_rebuilds_nothing(fab, tmp_path):
     stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and
              p.suffix in (".step", ".stl", ".svg", ".pdf", ".png", ".glb")}

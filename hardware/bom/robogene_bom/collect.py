@@ -9,8 +9,7 @@ from collections import Counter, OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from OCP.Bnd import Bnd_Box
-from OCP.BRepBndLib import BRepBndLib
+from robogene_head.geom import exact_bounds
 
 from . import board
 from .catalog import Catalog, CatalogError, Item
@@ -30,13 +29,9 @@ class Line:
 
 
 def exact_size(shape) -> tuple[float, float, float]:
-    """The shape's bounding box from its geometry alone. CadQuery's BoundingBox() uses a triangulation when the
-    shape has one, so a part meshed for its STL earlier in the run (a fresh build) and one read back from the cache
-    (a rebuild) gave different stock sizes, and so different estimates."""
-    box = Bnd_Box()
-    BRepBndLib.AddOptimal_s(shape.wrapped, box, False, False)
-    x0, y0, z0, x1, y1, z1 = box.Get()
-    return (x1 - x0, y1 - y0, z1 - z0)
+    """The shape's size from its geometry alone (see geom.exact_bounds: a triangulation must not change a price)."""
+    lo, hi = exact_bounds(shape)
+    return tuple(float(v) for v in hi - lo)
 
 
 @dataclass

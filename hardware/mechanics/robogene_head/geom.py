@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import cadquery as cq
 import numpy as np
+from OCP.Bnd import Bnd_Box
+from OCP.BRepBndLib import BRepBndLib
 from OCP.gp import gp_Trsf
 
 AXES = {"x": cq.Vector(1, 0, 0), "y": cq.Vector(0, 1, 0), "z": cq.Vector(0, 0, 1)}
@@ -64,3 +66,13 @@ def location(matrix: np.ndarray) -> cq.Location:
                    m[1, 0], m[1, 1], m[1, 2], m[1, 3],
                    m[2, 0], m[2, 1], m[2, 2], m[2, 3])
     return cq.Location(trsf)
+
+
+def exact_bounds(shape: cq.Shape) -> tuple[np.ndarray, np.ndarray]:
+    """(lower corner, upper corner) of the shape's bounding box from its geometry alone. CadQuery's BoundingBox()
+    uses a triangulation when the shape has one, so a part meshed earlier in the run (a fresh build exports its STL)
+    and the same part in a rebuild (STL cached) gave different boxes, and so different cache keys and lengths."""
+    found = Bnd_Box()
+    BRepBndLib.AddOptimal_s(shape.wrapped, found, False, False)
+    x0, y0, z0, x1, y1, z1 = found.Get()
+    return np.array([x0, y0, z0]), np.array([x1, y1, z1])

@@ -10,6 +10,7 @@ import json
 from pathlib import Path
 
 from ..cache import Cache, digest
+from ..geom import exact_bounds
 from ..params import HeadParameters
 from . import drawing, pinout, plan, report, spec
 
@@ -28,8 +29,8 @@ def _key(params: HeadParameters, parts, catalog) -> str:
     board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
     centres = []
     for p in parts:
-        bb = p.shape.BoundingBox()
-        centres.append((p.name, p.link, round(bb.center.x, 4), round(bb.center.y, 4), round(bb.center.z, 4)))
+        lo, hi = exact_bounds(p.shape)
+        centres.append((p.name, p.link, *(round(float(c), 4) for c in (lo + hi) / 2)))
     return digest(params.path.read_bytes(), code, board, centres)
 
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import kinematics
+from ..geom import exact_bounds
 from ..params import CHAIN_JOINTS, HeadParameters, ParameterError
 from . import pinout, spans
 from .spec import HOST, CableClass, Clamp, HarnessSpec
@@ -188,8 +189,8 @@ def plan(params: HeadParameters, spec: HarnessSpec, parts, connectors: dict | No
     def part_centre(name: str, where: str):
         if name not in by_name:
             raise ParameterError(f"{params.path}: {where}: no part {name!r} in the assembly")
-        bb = by_name[name].shape.BoundingBox()
-        return by_name[name].link, np.array([bb.center.x, bb.center.y, bb.center.z])
+        lo, hi = exact_bounds(by_name[name].shape)
+        return by_name[name].link, (lo + hi) / 2
 
     def static(link: str, p: np.ndarray, q: np.ndarray) -> float:
         return float(np.linalg.norm(q - p)) * spec.routed_factor

@@ -1,0 +1,68 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The build's cache keys see a part's geometry, and only its geometry: exporting a part (which meshes it) must not
+change its hash, or a package built from nothing redraws its drawings and pictures on the next build."""
+import sys
+from pathlib import Path
+from types import SimpleNamespace
+
+import cadquery as cq
+import pytest
+from OCP.BRepMesh import BRepMesh_IncrementalMesh
+
+from robogene_head.export import shape_hash, write_stl
+
+
+def _plate():
+    return cq.Workplane().box(40, 20, 5).faces(">Z").workplane().hole(3.2).edges("|Z").fillet(2).val()
+
+
+def test_exporting_a_part_leaves_its_hash_alone(tmp_path):
+    plate = _plate()
+    before = shape_hash(plate, "machined")
+    write_stl(plate, tmp_path / "plate.stl")      # attaches a triangulation and marks sub-shapes checked
+    assert (tmp_path / "plate.stl").stat().st_size > 0
+    assert shape_hash(plate, "machined") == before
+
+
+def test_a_meshed_and_an_unmeshed_build_of_the_same_geometry_hash_the_same():
+    meshed, unmeshed = _plate(), _plate()
+    BRepMesh_IncrementalMesh(meshed.wrapped, 0.01, False, 0.1, True).Perform()
+    assert shape_hash(meshed) == shape_hash(unmeshed)
+
+
+def test_geometry_and_labels_change_the_hash():
+    plate = _plate()
+    wider = cq.Workplane().box(40.01, 20, 5).faces(">Z").workplane().hole(3.2).edges("|Z").fillet(2).val()
+    assert shape_hash(wider) != shape_hash(plate)
+    assert shape_hash(plate, "machined") != shape_hash(plate, "printed")
+
+
+def _meshed(shape):
+    BRepMesh_IncrementalMesh(shape.wrapped, 0.5, False, 0.5, True).Perform()
+    return shape
+
+
+def _sphere_cap():
+    # A curved part whose coarse mesh falls visibly inside its true surface.
+    return cq.Workplane().sphere(20).cut(cq.Workplane().box(60, 60, 60).translate((0, 0, -25))).val()
+
+
+def test_exact_bounds_ignore_a_triangulation():
+    from robogene_head.geom import exact_bounds
+    cap = _sphere_cap()
+    lo, hi = exact_bounds(cap)
+    r = (20 ** 2 - 5 ** 2) ** 0.5      # the cap is widest where it was cut, at z = 5
+    assert lo == pytest.approx([-r, -r, 5], abs=1e-6) and hi == pytest.approx([r, r, 20], abs=1e-6)
+    _meshed(cap)
+    assert all(a == pytest.approx(b, abs=1e-9) for a, b in zip(exact_bounds(cap), (lo, hi)))
+
+
+def test_the_harness_key_does_not_change_when_the_parts_are_meshed(params):
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "hardware" / "bom"))
+    from robogene_bom import catalog
+    from robogene_head.harness.build import _key
+    parts = [SimpleNamespace(name="cap", link="head_frame", shape=_sphere_cap())]
+    before = _key(params, parts, catalog.load())
+    _meshed(parts[0].shape)
+    assert _key(params, parts, catalog.load()) == before
