@@ -15,9 +15,9 @@ FW_ARCH   := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 FW_CFLAGS := $(FW_ARCH) -Os -g -std=c11 -Wall -Wextra -Wpedantic -Werror -Wdouble-promotion -Wshadow \
              -ffunction-sections -fdata-sections -I$(FW_DIR)/core -I$(FW_DIR) -I$(FW_DIR)/stm32
 FW_SOURCES := $(sort $(wildcard $(FW_DIR)/core/*.c) $(wildcard $(FW_DIR)/stm32/*.c))
-FW_HEADERS := $(wildcard $(FW_DIR)/*.h $(FW_DIR)/core/*.h $(FW_DIR)/stm32/*.h)
+FW_HEADERS := $(wildcard $(FW_DIR)/generated/*.h $(FW_DIR)/core/*.h $(FW_DIR)/stm32/*.h)
 # address:name of every board in the generated table, e.g. 3:eyes-pan
-FW_BOARDS := $(shell sed -n 's/^  {"\([a-z0-9-]*\)", \([0-9]*\)u,.*/\2-\1/p' $(FW_DIR)/robogene_head_board_config.h)
+FW_BOARDS := $(shell sed -n 's/^  {"\([a-z0-9-]*\)", \([0-9]*\)u,.*/\2-\1/p' $(FW_DIR)/generated/robogene_head_board_config.h)
 FW_IMAGES := $(foreach b,$(FW_BOARDS),$(FW_OUT)/robogene-motor-board-$(b))
 
 # $(STAMPS)/apt-firmware installs tools/setup/apt/firmware.txt (the pattern rule of mk/setup.mk); kept, not

@@ -41,7 +41,7 @@ int cmd_can_sim(Args& args) {
   const auto duration = args.option("--duration");
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
-  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
+  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/generated/head.ini)");
   const double seconds = duration ? parse_seconds(*duration, "--duration") : -1.0;
 
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));

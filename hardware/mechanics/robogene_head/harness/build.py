@@ -9,8 +9,9 @@ import hashlib
 import json
 from pathlib import Path
 
+from robogene_head_model.params import HeadParameters
+
 from ..cache import Cache, digest
-from ..params import HeadParameters
 from . import drawing, pinout, plan, report, spec
 
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))

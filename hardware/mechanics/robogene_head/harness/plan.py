@@ -11,8 +11,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
+
 from .. import kinematics
-from ..params import CHAIN_JOINTS, HeadParameters, ParameterError
 from . import pinout, spans
 from .spec import HOST, CableClass, Clamp, HarnessSpec
 
