@@ -67,7 +67,11 @@ class _Run:
             return emit(self.idl if g.input == "idl" else self.root)
         with tempfile.TemporaryDirectory(prefix=f"generate-{g.name}-") as out:
             words = {"{python}": sys.executable, "{out}": out, "{fab}": str(self.fab)}
-            argv = [words.get(w, w) for w in g.command]
+            argv = []
+            for word in g.command:
+                for placeholder, value in words.items():
+                    word = word.replace(placeholder, value)
+                argv.append(word)
             result = subprocess.run(argv, cwd=self.root, capture_output=True, text=True)
             if result.returncode != 0:
                 shown = " ".join(g.command)

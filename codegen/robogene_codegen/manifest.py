@@ -130,7 +130,7 @@ def parse(doc: Document) -> Manifest:
         if command is not None:
             if not (isinstance(command, list) and command and all(isinstance(c, str) for c in command)):
                 fail(at + ("command",), f"{name}: expected a list of words")
-            elif "{out}" not in command:
+            elif not any("{out}" in word for word in command):
                 fail(at + ("command",), f"{name}: the command must write into {{out}}")
         input_ = entry.get("input", "idl")
         if input_ not in INPUTS or (command is not None and "input" in entry):
