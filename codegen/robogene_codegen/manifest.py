@@ -18,7 +18,7 @@ MANIFEST = "codegen/generated-manifest.yaml"
 GENERATED = "generated"  # the name of every folder that holds nothing but generated files
 INPUTS = ("idl", "root")
 PLACEHOLDERS = ("{python}", "{out}", "{fab}")
-_KEYS = {"name", "doc", "emitter", "input", "command", "needs", "into", "files", "why", "blocks"}
+_KEYS = {"name", "doc", "emitter", "input", "command", "needs", "into", "files", "why", "no_header", "blocks"}
 _NAME = re.compile(r"[a-z][a-z0-9-]*\Z")
 _BLOCK = re.compile(r"[A-Z][A-Z0-9_]*\Z")
 
@@ -34,6 +34,7 @@ class Generator:
     into: Optional[str]               # the folder of its files ...
     files: tuple = ()                 # ... named relative to it
     blocks: tuple = ()                # or ((document, (BLOCK, ...)), ...)
+    no_header: Optional[str] = None   # why its files cannot carry the do-not-edit header
 
     @property
     def paths(self) -> list[str]:
@@ -135,6 +136,8 @@ def parse(doc: Document) -> Manifest:
         input_ = entry.get("input", "idl")
         if input_ not in INPUTS or (command is not None and "input" in entry):
             fail(at + ("input",), f"{name}: `input:` is one of {', '.join(INPUTS)}, for an emitter only")
+        if "no_header" in entry and not (isinstance(entry["no_header"], str) and "files" in entry):
+            fail(at + ("no_header",), f"{name}: `no_header:` says why its files cannot carry the header (files only)")
         needs = entry.get("needs")
         if needs is not None and not (isinstance(needs, str) and re.fullmatch(r"[a-z][a-z0-9-]*", needs)):
             fail(at + ("needs",), f"{name}: expected one make target, got {needs!r}")
@@ -175,7 +178,7 @@ def parse(doc: Document) -> Manifest:
         generators.append(Generator(
             name=name, doc=entry.get("doc", ""), emitter=emitter, input=input_,
             command=tuple(command) if isinstance(command, list) else None, needs=needs,
-            into=into, files=tuple(files or ()), blocks=tuple(parsed_blocks)))
+            into=into, files=tuple(files or ()), blocks=tuple(parsed_blocks), no_header=entry.get("no_header")))
     if errors:
         raise IdlErrors(errors)
     return Manifest(tuple(generators))
