@@ -12,7 +12,11 @@ GENERATED_MANIFEST := codegen/generated-manifest.yaml
 GENERATED_NEEDS ?= $(sort $(shell sed -n 's/^ *needs: *\([a-z][a-z0-9-]*\) *$$/\1/p' $(GENERATED_MANIFEST)))
 
 .PHONY: generate check-generated test-codegen test-can-protocol
-generate: $(VENV)/.stamp $(GENERATED_NEEDS)
+# In two passes: what needs nothing built first, so that the build products (the compiled module, the
+# package) are then made from the fresh sources, and after them every generator.
+generate: $(VENV)/.stamp
+	$(CODEGEN) generate --only sources
+	$(MAKE) --no-print-directory $(GENERATED_NEEDS)
 	$(CODEGEN) generate --fab $(FAB)
 
 check-generated: $(VENV)/.stamp $(GENERATED_NEEDS)

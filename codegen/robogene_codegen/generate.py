@@ -79,7 +79,8 @@ class _Run:
                 raise GenerateError([f"{g.name}: `{shown}` failed (exit {result.returncode}{needs}):\n" +
                                      (result.stderr or result.stdout).rstrip()])
             base = Path(out)
-            return {str(p.relative_to(base)): p.read_text(encoding="utf-8")
+            # Bytes decoded as they are: no newline translation, so what is compared is what was written.
+            return {p.relative_to(base).as_posix(): p.read_bytes().decode("utf-8")
                     for p in sorted(base.rglob("*")) if p.is_file()}
 
 
@@ -102,7 +103,11 @@ def render(root: Path, only: Optional[Iterable[str]] = None, fab: Optional[Path]
     documents: dict[str, str] = {}
     problems: list[str] = []
     for g in select(manifest, only):
-        produced = run.produce(g)
+        try:
+            produced = run.produce(g)
+        except (ValueError, LookupError, OSError) as exc:  # a bad input file (SVD, IDL lookup), bad bytes
+            problems.append(f"{g.name}: {exc}")
+            continue
         if g.into:
             problems += _agree(g, set(produced), list(g.files), "file")
             files.update((f"{g.into}/{name}", produced[name]) for name in g.files if name in produced)
@@ -111,9 +116,9 @@ def render(root: Path, only: Optional[Iterable[str]] = None, fab: Optional[Path]
             problems += _agree(g, set(produced), list(names), f"block of {document}:")
             if document not in documents:
                 try:
-                    documents[document] = (root / document).read_text(encoding="utf-8")
-                except OSError as exc:
-                    problems.append(f"{g.name}: cannot read {document} ({exc.strerror})")
+                    documents[document] = (root / document).read_bytes().decode("utf-8")
+                except (OSError, UnicodeDecodeError) as exc:
+                    problems.append(f"{g.name}: cannot read {document} ({getattr(exc, 'strerror', None) or exc})")
                     continue
             try:
                 documents[document] = doc_blocks.replace(

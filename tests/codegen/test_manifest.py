@@ -191,3 +191,14 @@ def test_a_wrong_manifest_is_refused_naming_the_line(old, new, message):
     errors = [str(e) for e in info.value.errors]
     assert any(e.startswith(f"{MANIFEST}:") and message in e for e in errors), errors
     assert any(abs(e.mark.line - line) <= 2 for e in info.value.errors), (line, errors)
+
+
+def test_a_broken_device_description_is_an_error_naming_the_generator(tree, capsys):
+    svd_dir = tree / "hardware/electronics/firmware/stm32"
+    svd_dir.mkdir(parents=True)
+    text = (ROOT / "hardware/electronics/firmware/stm32/stm32g431.svd").read_text()
+    (svd_dir / "stm32g431.svd").write_text(text.replace("<name>IWDG</name><baseAddress>0x40003000</baseAddress>",
+                                                        "<name>IWDG</name><baseAddress>0x4000z000</baseAddress>"))
+    assert main(["check", "--root", str(tree), "--only", "stm32-registers"]) == 1
+    err = capsys.readouterr().err
+    assert "error: stm32-registers: stm32g431.svd: IWDG.baseAddress: '0x4000z000' is not a number" in err, err

@@ -19,7 +19,7 @@ from ..common import line_comment_header
 SVD_DIR = "hardware/electronics/firmware/stm32"
 
 
-class SvdError(Exception):
+class SvdError(ValueError):
     pass
 
 
