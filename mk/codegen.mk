@@ -16,7 +16,7 @@ GENERATED_NEEDS ?= $(sort $(shell sed -n 's/^ *needs: *\([a-z][a-z0-9-]*\) *$$/\
 # package) are then made from the fresh sources, and after them every generator.
 generate: $(VENV)/.stamp
 	$(CODEGEN) generate --only sources
-	$(MAKE) --no-print-directory $(GENERATED_NEEDS)
+	$(if $(strip $(GENERATED_NEEDS)),$(MAKE) --no-print-directory $(GENERATED_NEEDS))
 	$(CODEGEN) generate --fab $(FAB)
 
 check-generated: $(VENV)/.stamp $(GENERATED_NEEDS)
