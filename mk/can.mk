@@ -16,9 +16,9 @@ $(STAMPS)/can-vm-parts: drivers/can/vm/fetch-vm-parts.sh $(STAMPS)/apt-can
 
 .PHONY: test-can test-can-vm head-sim
 # A simulated head on the virtual bus "head", until Ctrl-C; drive it with
-#   build/bin/robogene dev --device robogene_can --from drivers/can/config/head.ini --bus virtual:head --name /head
+#   build/bin/robogene dev --device robogene_can --from drivers/can/generated/head.ini --bus virtual:head --name /head
 head-sim: runtime
-	$(BUILD)/bin/robogene can-sim --bus virtual:head --from drivers/can/config/head.ini
+	$(BUILD)/bin/robogene can-sim --bus virtual:head --from drivers/can/generated/head.ini
 
 test-can: runtime
 	cd $(BUILD) && ctest -L can --output-on-failure --no-tests=error -j $(JOBS) --timeout 300
@@ -28,18 +28,6 @@ test-can-vm: runtime $(STAMPS)/can-vm-parts $(STAMPS)/py-can
 	drivers/can/vm/run-vm-tests.sh --build $(BUILD) --cache $(CAN_VM_CACHE) --out $(CAN_VM_OUT)
 	$(PY) drivers/can/vm/decode_with_cantools.py drivers/can/generated/head.dbc \
 	  $(CAN_VM_OUT)/candump-vcan0.log $(CAN_VM_OUT)/can-sim.log $(CAN_VM_OUT)/robogene_can.log
-
-# docs/electronics.md carries the protocol tables in brief, a block generated from the IDL
-# (codegen/robogene_codegen/emitters/markdown_can/doc_blocks.py): `make generate` rewrites it and
-# `make check-generated` fails when it is stale.
-CAN_DOC_BLOCKS = PYTHONPATH=$(ROOT)/codegen $(PY) -m robogene_codegen.emitters.markdown_can.doc_blocks
-.PHONY: can-doc-blocks check-can-doc-blocks
-generate: can-doc-blocks
-check-generated: check-can-doc-blocks
-can-doc-blocks: $(VENV)/.stamp
-	$(CAN_DOC_BLOCKS) --update
-check-can-doc-blocks: $(VENV)/.stamp
-	$(CAN_DOC_BLOCKS) --check
 
 TEST_TARGETS += test-can test-can-vm
 HELP_LINES   += "make head-sim   simulate the head's CAN boards on the virtual bus 'head' (no hardware)" \

@@ -32,8 +32,10 @@ $(ELEC_FAB)/.stamp: $(ELEC_SRC) $(ELEC_TOOLS)/fab-export.sh $(ELEC_MODELS)/.stam
 	$(ELEC_TOOLS)/fab-export.sh $(ELEC_BASE) $(ELEC_FAB) $(ELEC_MODELS)
 	touch $@
 
-.PHONY: electronics test-electronics electronics-route
+.PHONY: electronics electronics-tools test-electronics electronics-route
 electronics: $(ELEC_FAB)/.stamp
+# KiCad's symbol libraries, which the schematic generator reads (codegen/generated-manifest.yaml).
+electronics-tools: $(STAMPS)/apt-electronics
 
 test-electronics: electronics $(VENV)/.stamp
 	$(PY) -m pytest -q -p no:cacheprovider tests/electronics

@@ -24,7 +24,7 @@ FW_CFLAGS := $(FW_ARCH) -Os -g -std=c11 -Wall -Wextra -Wpedantic -Werror -Wdoubl
              -ffunction-sections -fdata-sections -I$(FW_DIR)/core -I$(FW_DIR) -I$(FW_DIR)/stm32 \
              -DROBOGENE_BOARD_REVISION=\'$(FW_REVISION)\'
 FW_SOURCES := $(sort $(wildcard $(FW_DIR)/core/*.c) $(wildcard $(FW_DIR)/stm32/*.c))
-FW_HEADERS := $(wildcard $(FW_DIR)/*.h $(FW_DIR)/core/*.h $(FW_DIR)/stm32/*.h $(FW_DIR)/bootloader/*.h)
+FW_HEADERS := $(wildcard $(FW_DIR)/generated/*.h $(FW_DIR)/core/*.h $(FW_DIR)/stm32/*.h $(FW_DIR)/bootloader/*.h)
 # The bootloader: its protocol from the core, the STM32 layer's start-up, pins, CAN and settings.
 FW_BOOT_SOURCES := $(addprefix $(FW_DIR)/core/,rg_boot.c rg_image.c rg_crc32.c) \
                    $(addprefix $(FW_DIR)/stm32/,startup.c gpio.c fdcan.c settings.c handoff.c) \
@@ -32,7 +32,7 @@ FW_BOOT_SOURCES := $(addprefix $(FW_DIR)/core/,rg_boot.c rg_image.c rg_crc32.c) 
 FW_APP_FLASH  := 112640
 FW_BOOT_FLASH := 16384
 # address:name of every board in the generated table, e.g. 3:eyes-pan
-FW_BOARDS := $(shell sed -n 's/^  {"\([a-z0-9-]*\)", \([0-9]*\)u,.*/\2-\1/p' $(FW_DIR)/robogene_head_board_config.h)
+FW_BOARDS := $(shell sed -n 's/^  {"\([a-z0-9-]*\)", \([0-9]*\)u,.*/\2-\1/p' $(FW_DIR)/generated/robogene_head_board_config.h)
 FW_IMAGES := $(foreach b,$(FW_BOARDS),$(FW_OUT)/robogene-motor-board-$(b) $(FW_OUT)/robogene-bootloader-$(b))
 
 # $(STAMPS)/apt-firmware installs tools/setup/apt/firmware.txt (the pattern rule of mk/setup.mk); kept, not

@@ -14,7 +14,7 @@ BOARD_BOMS   ?= $(ELEC_FAB)/bom.csv
 BOARD_STEP   ?= $(ELEC_FAB)/board.step
 HW_BOARD_DEP := $(ELEC_FAB)/.stamp
 endif
-HW_SOURCES := hardware/head-parameters.yaml $(shell find hardware/mechanics hardware/bom -type f \
+HW_SOURCES := hardware/head-parameters.yaml $(shell find hardware/mechanics hardware/head-model hardware/bom -type f \
                 \( -name '*.py' -o -name '*.yaml' -o -name '*.scad' \) 2>/dev/null)
 
 # Debian packages. Once KiCad 9 has come from bookworm-backports, libhwloc15 is a backports version and
@@ -41,14 +41,19 @@ $(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS) $(B
 	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b)) \
 	  $(if $(BOARD_STEP),--board-step $(BOARD_STEP)) $(if $(strip $(BATCH)),--batch $(strip $(BATCH)))
 
-.PHONY: fab test-hardware FORCE
+.PHONY: fab test-hardware test-head-model FORCE
 ALL_TARGETS  += fab
-TEST_TARGETS += test-hardware
+TEST_TARGETS += test-head-model test-hardware
 fab: $(FAB)/manifest.json
+
+# The head model (hardware/head-model, installed into .venv by `make setup`): no CAD, no package needed.
+test-head-model: $(VENV)/.stamp
+	$(PY) -m pytest -q -p no:cacheprovider tests/head_model
 
 test-hardware: $(FAB)/manifest.json
 	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider tests/hardware
 
 HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders);" \
               "                BATCH=N prices the BOM for N heads" \
-              "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests"
+              "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests" \
+              "make test-head-model  the head model package shared by the CAD and the code generator"

@@ -20,9 +20,10 @@ $(STAMPS)/python: $(RUNTIME_SOURCES) $(VENV)/.stamp | $(STAMPS)
 	touch $@
 python: $(STAMPS)/python
 
-# The committed type stub of robogene._core, regenerated from the built module (docs/python.md).
+# The committed type stub of robogene._core, regenerated from the built module (docs/python.md); the
+# manifest's python-stub generator, which `make generate` runs too.
 python-stub: python
-	$(PY) runtime/python/gen_stub.py
+	PYTHONPATH=$(ROOT)/codegen $(PY) -m robogene_codegen generate --only python-stub
 
 test-cpp: runtime
 	cd $(BUILD) && ctest --output-on-failure --no-tests=error -j $(JOBS) --timeout 300

@@ -11,9 +11,12 @@ $(STAMPS)/apt-%: tools/setup/apt/%.txt tools/setup/apt-install.sh | $(STAMPS)
 	tools/setup/apt-install.sh $<
 	touch $@
 
-$(VENV)/.stamp: tools/setup/requirements.txt $(STAMPS)/apt-runtime
+# The head model package (hardware/head-model) that the CAD and the code generator import is installed
+# editable: its sources stay where they are, so editing them needs no reinstall.
+$(VENV)/.stamp: tools/setup/requirements.txt hardware/head-model/pyproject.toml $(STAMPS)/apt-runtime
 	test -x $(PY) || $(PYTHON3) -m venv $(VENV)
 	$(PY) -m pip install -q --disable-pip-version-check -r $<
+	$(PY) -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps -e hardware/head-model
 	touch $@
 
 .PHONY: setup

@@ -3,7 +3,7 @@
 """Writes tests/can/vectors.json: one frame per message of the protocol, with values that exercise
 every field (signs, scaling, enums, flags), from the Python codec. The hand-written vectors in the
 file (`"origin": "reference"`, byte layouts from the reference facts) and the malformed frames are
-kept as they are. Run after changing the protocol: python tests/can/make_vectors.py"""
+kept as they are. `make generate` runs it (codegen/generated-manifest.yaml)."""
 import json
 import sys
 import types
@@ -56,13 +56,15 @@ def generated(can) -> list[dict]:
     return out
 
 
-def main() -> None:
+def main(argv: list[str]) -> None:
+    """`--out DIR` writes DIR/vectors.json instead (make generate: the manifest's can-vectors)."""
+    out = Path(argv[argv.index("--out") + 1]) / VECTORS.name if "--out" in argv else VECTORS
     can = _codec()
     data = json.loads(VECTORS.read_text())
     data["frames"] = [v for v in data["frames"] if v["origin"] != "generated"] + generated(can)
-    VECTORS.write_text(json.dumps(data, indent=1) + "\n")
-    print(f"{VECTORS}: {len(data['frames'])} frames, {len(data['malformed'])} malformed")
+    out.write_text(json.dumps(data, indent=1) + "\n")
+    print(f"{out}: {len(data['frames'])} frames, {len(data['malformed'])} malformed")
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

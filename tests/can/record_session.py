@@ -3,7 +3,7 @@
 """Records tests/can/data/head-session.log, a candump-format log of a host bringing up the head's
 three boards and moving every joint, written by our own encoder: version handshake, limits, PID
 gains, broadcast policy, control mode, position and velocity moves, polled replies, and the boards'
-broadcasts at their periods. Re-record after changing the protocol: python tests/can/record_session.py"""
+broadcasts at their periods. `make generate` re-records it (codegen/generated-manifest.yaml)."""
 import sys
 import types
 from pathlib import Path
@@ -83,12 +83,14 @@ def session(can):
     return out
 
 
-def main() -> None:
+def main(argv: list[str]) -> None:
+    """`--out DIR` writes DIR/head-session.log instead (make generate: the manifest's can-session)."""
+    out = Path(argv[argv.index("--out") + 1]) / LOG.name if "--out" in argv else LOG
     can = _codec()
     lines = [f"({START + t:.6f}) can0 {can.encode(env)}" for t, env in session(can)]
-    LOG.write_text("\n".join(lines) + "\n")
-    print(f"{LOG}: {len(lines)} frames")
+    out.write_text("\n".join(lines) + "\n")
+    print(f"{out}: {len(lines)} frames")
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

@@ -18,7 +18,7 @@ from robogene_codegen.idl import IdlErrors, compile_directory
 # The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
 pytestmark = pytest.mark.timeout(900)
 
-INI = ROOT / "drivers" / "can" / "config" / "head.ini"
+INI = ROOT / "drivers" / "can" / "generated" / "head.ini"
 FIRMWARE = ROOT / "hardware" / "electronics" / "firmware"
 PARAMS = ROOT / "hardware" / "head-parameters.yaml"
 
@@ -107,9 +107,12 @@ def test_reductions_and_encoders_come_from_the_parameter_file(ini, params):
 def test_firmware_headers_compile(build_dir):
     if shutil.which(CC) is None:
         pytest.fail(f"{CC} is needed to check the firmware headers")
-    for header in sorted(FIRMWARE.glob("*.h")):
+    headers = sorted((FIRMWARE / "generated").glob("robogene_*.h"))
+    assert [h.name for h in headers] == ["robogene_can_motor_control.h", "robogene_head_board_config.h"]
+    for header in headers:
         unit = build_dir / f"include_{header.stem}.c"
-        unit.write_text(f'#include "{header.name}"\n#include "{header.name}"\ntypedef int translation_unit_is_not_empty;\n')
+        unit.write_text(f'#include "generated/{header.name}"\n#include "generated/{header.name}"\n'
+                        'typedef int translation_unit_is_not_empty;\n')
         cmd = [CC, "-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Werror", "-fsyntax-only", f"-I{FIRMWARE}", str(unit)]
         result = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
         assert result.returncode == 0, f"{header.name}:\n{result.stderr}"
@@ -119,7 +122,7 @@ def test_firmware_table_matches_the_driver_config(build_dir, ini):
     program = build_dir / "print_boards.c"
     program.write_text("""
 #include <stdio.h>
-#include "robogene_head_board_config.h"
+#include "generated/robogene_head_board_config.h"
 int main(void) {
   for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b) {
     const robogene_board_config_t *c = robogene_board_config(robogene_board_configs[b].can_address);
@@ -156,7 +159,7 @@ def test_firmware_homing_matches_the_driver_config(build_dir, ini):
     program = build_dir / "print_homing.c"
     program.write_text("""
 #include <stdio.h>
-#include "robogene_head_board_config.h"
+#include "generated/robogene_head_board_config.h"
 int main(void) {
   for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b) {
     for (int a = 0; a < 2; ++a) {
@@ -267,7 +270,8 @@ def tree(tmp_path):
         shutil.copy(ROOT / "interfaces" / "idl" / name, idl / name)
     (tmp_path / "hardware").mkdir()
     shutil.copy(PARAMS, tmp_path / "hardware" / "head-parameters.yaml")
-    (tmp_path / "hardware" / "mechanics").symlink_to(ROOT / "hardware" / "mechanics")
+    (tmp_path / "codegen").mkdir()
+    shutil.copy(ROOT / "codegen" / "generated-manifest.yaml", tmp_path / "codegen")
     return tmp_path
 
 
@@ -400,12 +404,13 @@ def test_a_parameter_change_travels_to_every_output(tree):
     path = tree / "hardware" / "head-parameters.yaml"
     path.write_text(path.read_text().replace("yaw: {motor_teeth: 14, joint_teeth: 36}",
                                              "yaw: {motor_teeth: 14, joint_teeth: 40}"))
-    outputs = render(tree)
-    ini = outputs["drivers/can/config/head.ini"]
+    configs = ["can-driver-config", "firmware-can"]
+    outputs = render(tree, configs)
+    ini = outputs["drivers/can/generated/head.ini"]
     assert f"gear_ratio 66 246 {66 * 40 / 14!r} " in ini
-    header = outputs["hardware/electronics/firmware/robogene_head_board_config.h"]
+    header = outputs["hardware/electronics/firmware/generated/robogene_head_board_config.h"]
     assert f"{4 * 512 * 66 * 40 / 14 / 360!r}f" in header
-    assert render(tree) == outputs  # byte-identical across runs
+    assert render(tree, configs) == outputs  # byte-identical across runs
 
 
 def _idl_errors(tree, old: str, new: str) -> tuple[list[str], str]:

@@ -11,6 +11,7 @@ import pytest
 
 from conftest import CXX, ROOT, RUNTIME_INCLUDES
 from robogene_codegen.__main__ import main
+from robogene_codegen.manifest import MANIFEST, read
 
 # The first test of the module builds the C++ side (g++), which can take minutes on a busy machine.
 pytestmark = pytest.mark.timeout(900)
@@ -27,12 +28,14 @@ NEW_COMMAND = """      - name: get_supply_voltage
 def tree(tmp_path):
     root = tmp_path / "tree"
     shutil.copytree(ROOT / "interfaces", root / "interfaces")
-    for d in ("drivers/can/generated", "drivers/can/config", "runtime/python/robogene/can", "docs/can",
-              "hardware/electronics/firmware", "runtime/include/robogene/dev/generated",
-              "runtime/src/dev/generated", "runtime/python/robogene/dev/generated", "docs/interfaces"):
-        shutil.copytree(ROOT / d, root / d, ignore=shutil.ignore_patterns("__pycache__"))
-    shutil.copy(ROOT / "hardware" / "head-parameters.yaml", root / "hardware" / "head-parameters.yaml")
-    (root / "hardware" / "mechanics").symlink_to(ROOT / "hardware" / "mechanics")
+    manifest = read(ROOT)
+    for rel in [MANIFEST, "hardware/head-parameters.yaml", *manifest.block_documents]:
+        (root / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(ROOT / rel, root / rel)
+    for d in manifest.generated_folders:
+        shutil.copytree(ROOT / d, root / d, ignore=shutil.ignore_patterns("__pycache__"), dirs_exist_ok=True)
+    shutil.copytree(ROOT / "runtime/python/robogene/can", root / "runtime/python/robogene/can", dirs_exist_ok=True,
+                    ignore=shutil.ignore_patterns("__pycache__"))
     return root
 
 
@@ -42,16 +45,17 @@ def test_added_command_reaches_every_output(tree, capsys, tmp_path):
     anchor = "      - name: get_firmware_version\n"
     proto.write_text(text.replace(anchor, NEW_COMMAND + anchor))
 
-    assert main(["check", "--root", str(tree)]) == 1
+    assert main(["check", "--root", str(tree), "--only", "idl"]) == 1
     err = capsys.readouterr().err
     for stale in ("drivers/can/generated/motor_control.hpp", "drivers/can/generated/motor_control.cpp",
                   "runtime/python/robogene/can/generated/motor_control.py", "drivers/can/generated/head.dbc",
-                  "hardware/electronics/firmware/robogene_can_motor_control.h", "docs/can/motor_control.md",
-                  "drivers/can/config/head.ini"):  # the ini carries the protocol's fingerprint
+                  "hardware/electronics/firmware/generated/robogene_can_motor_control.h",
+                  "docs/generated/can/motor_control.md",
+                  "drivers/can/generated/head.ini"):  # the ini carries the protocol's fingerprint
         assert f"stale: {stale}: differs" in err, err
 
-    assert main(["generate", "--root", str(tree)]) == 0
-    assert main(["check", "--root", str(tree)]) == 0
+    assert main(["generate", "--root", str(tree), "--only", "idl"]) == 0
+    assert main(["check", "--root", str(tree), "--only", "idl"]) == 0
     capsys.readouterr()
 
     # Python: the new message encodes and decodes.
@@ -79,4 +83,4 @@ def test_added_command_reaches_every_output(tree, capsys, tmp_path):
 
     # The DBC and the docs know it too.
     assert '120 "get_supply_voltage_reply"' in (gen / "head.dbc").read_text()
-    assert "`get_supply_voltage`" in (tree / "docs/can/motor_control.md").read_text()
+    assert "`get_supply_voltage`" in (tree / "docs/generated/can/motor_control.md").read_text()

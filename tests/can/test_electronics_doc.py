@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """docs/electronics.md carries the CAN protocol in brief (identifier layout, classes, commands,
 broadcasts) in a block generated from the IDL: the block is current, says what the protocol file
-says (read here with yaml, not through the generator), and goes stale when the protocol changes."""
+says (read here with yaml, not through the generator), and goes stale when the protocol changes. The block is
+the manifest's `can-protocol-summary` generator, checked and rewritten like every generated file."""
 import re
 import shutil
 
@@ -10,7 +11,9 @@ import pytest
 import yaml
 
 from conftest import ROOT
-from robogene_codegen.emitters.markdown_can import doc_blocks
+from robogene_codegen.__main__ import main
+
+ONLY = ["--only", "can-protocol-summary"]
 
 PROTOCOL_FILE = ROOT / "interfaces" / "idl" / "can_motor_control.yaml"
 DOC = ROOT / "docs" / "electronics.md"
@@ -45,8 +48,8 @@ def names(fields, named_types: set[str]) -> str:
     return ", ".join(one(f) for f in fields or []) or "—"
 
 
-def test_the_block_is_current():
-    assert doc_blocks.main(["--check"]) == 0
+def test_the_block_is_current(capsys):
+    assert main(["check", *ONLY]) == 0, capsys.readouterr().err
 
 
 def test_the_block_says_what_the_protocol_file_says():
@@ -82,9 +85,10 @@ def tree(tmp_path):
     """A copy of what the block depends on: the IDL (and the head parameters it reads) and the doc."""
     root = tmp_path / "tree"
     shutil.copytree(ROOT / "interfaces", root / "interfaces")
+    (root / "codegen").mkdir()
+    shutil.copy(ROOT / "codegen" / "generated-manifest.yaml", root / "codegen")
     (root / "hardware").mkdir()
     shutil.copy(ROOT / "hardware" / "head-parameters.yaml", root / "hardware" / "head-parameters.yaml")
-    (root / "hardware" / "mechanics").symlink_to(ROOT / "hardware" / "mechanics")
     (root / "docs").mkdir()
     shutil.copy(DOC, root / "docs" / "electronics.md")
     return root
@@ -97,11 +101,11 @@ def test_a_protocol_change_makes_the_block_stale_and_update_rewrites_it(tree, ca
                                                "        doc: Read the motor supply voltage.\n        reply:\n"
                                                "          - {name: voltage, type: uint16, unit: V, scale: 0.001}\n"
                                                + anchor))
-    assert doc_blocks.main(["--root", str(tree), "--check"]) == 1
-    assert "the CAN_PROTOCOL block differs from the IDL; run `make generate`" in capsys.readouterr().err
+    assert main(["check", "--root", str(tree), *ONLY]) == 1
+    assert "stale: docs/electronics.md: differs from what its generator writes" in capsys.readouterr().err
 
-    assert doc_blocks.main(["--root", str(tree), "--update"]) == 0
-    assert doc_blocks.main(["--root", str(tree), "--check"]) == 0
+    assert main(["generate", "--root", str(tree), *ONLY]) == 0
+    assert main(["check", "--root", str(tree), *ONLY]) == 0
     updated = (tree / "docs" / "electronics.md").read_text()
     assert "| `0x78` | `get_supply_voltage` | — | `voltage` (V) |" in block(updated)
     # Only the block changed: the hand-written text around it is as it was.
@@ -112,6 +116,8 @@ def test_a_protocol_change_makes_the_block_stale_and_update_rewrites_it(tree, ca
 def test_a_doc_without_the_markers_is_reported(tree, capsys):
     doc = tree / "docs" / "electronics.md"
     doc.write_text(doc.read_text().replace("<!-- CAN_PROTOCOL:END -->", ""))
-    assert doc_blocks.main(["--root", str(tree), "--check"]) == 1
+    before = doc.read_text()
+    assert main(["generate", "--root", str(tree), *ONLY]) == 1
     err = capsys.readouterr().err
-    assert str(doc) in err and "expected one <!-- CAN_PROTOCOL:BEGIN" in err, err
+    assert "error: docs/electronics.md: no <!-- CAN_PROTOCOL:BEGIN ... --> ... <!-- CAN_PROTOCOL:END --> block" in err, err
+    assert "nothing written" in err and doc.read_text() == before

@@ -17,7 +17,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 FAB = ROOT / "build" / "fab" / "firmware"
-HEADER = ROOT / "hardware" / "electronics" / "firmware" / "robogene_head_board_config.h"
+HEADER = ROOT / "hardware" / "electronics" / "firmware" / "generated" / "robogene_head_board_config.h"
 SIZE_REPORT = ROOT / "hardware" / "electronics" / "firmware" / "tools" / "size_report.py"
 STAMP = ROOT / "hardware" / "electronics" / "firmware" / "tools" / "stamp_image.py"
 

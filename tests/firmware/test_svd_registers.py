@@ -16,7 +16,7 @@ sys.path.insert(0, str(ROOT / "codegen"))
 from robogene_codegen.emitters import svd_c  # noqa: E402
 
 SVD = ROOT / "hardware" / "electronics" / "firmware" / "stm32" / "stm32g431.svd"
-HEADER = SVD.with_name("stm32g431_regs.h")
+HEADER = ROOT / "hardware" / "electronics" / "firmware" / "generated" / "stm32g431_regs.h"
 
 
 def test_the_committed_header_is_what_the_generator_writes():

@@ -20,7 +20,7 @@ DATA = Path(__file__).resolve().parent / "data"
 
 @pytest.fixture(scope="session")
 def params():
-    from robogene_head import params as p
+    from robogene_head_model import params as p
     return p.load()
 
 

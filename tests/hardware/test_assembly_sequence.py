@@ -17,7 +17,7 @@ from robogene_head import sequence
 from robogene_head.assembly import Assembly
 from robogene_head.cache import Cache
 from robogene_head.checks import assembly_sequence as chk
-from robogene_head.params import parse
+from robogene_head_model.params import parse
 from robogene_head.parts import head_frame, neck
 from robogene_head.progress import Progress
 

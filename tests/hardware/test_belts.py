@@ -8,7 +8,7 @@ import pytest
 import yaml
 
 from robogene_head.checks import interference
-from robogene_head.params import ParameterError, load
+from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import build_all, mounts
 
 

@@ -24,7 +24,7 @@ from robogene_head import board_model, external as ext, massprops
 from robogene_head.assembly import Assembly
 from robogene_head.checks import interference
 from robogene_head.fab import design_hash
-from robogene_head.params import ParameterError, load
+from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import build_all
 
 from conftest import REPO

@@ -9,8 +9,10 @@ import xml.etree.ElementTree as ET
 import pytest
 import yaml
 
-from robogene_head import drive_limits, urdf
-from robogene_head.params import DEFAULT_PATH, ParameterError, load
+from robogene_head import urdf
+
+from robogene_head_model import drive_limits
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 
 BELTS = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}
 

@@ -10,9 +10,11 @@ import numpy as np
 import pytest
 import yaml
 
-from robogene_head import drive_limits, drive_sizing, fab as fab_mod, massprops
+from robogene_head import drive_sizing, fab as fab_mod, massprops
+
+from robogene_head_model import drive_limits
 from robogene_head.massprops import MassProps
-from robogene_head.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 from robogene_head.kinematics import rotation
 from robogene_head.pose_search import GRAVITY, Chain
 from robogene_head.progress import Progress

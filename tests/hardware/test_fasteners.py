@@ -104,7 +104,7 @@ def test_the_yaw_motor_mount_slides_to_tension_the_belt(params, assembly):
 
 def test_a_screw_too_long_for_the_gearhead_threads_is_named(params, external, tmp_path):
     import yaml
-    from robogene_head.params import ParameterError, load
+    from robogene_head_model.params import ParameterError, load
     from robogene_head.parts import build_all
     data = yaml.safe_load(params.path.read_text())
     data["purchased"]["iso4762-M2x8"]["length"] = 12
@@ -147,7 +147,7 @@ def test_every_board_is_clamped_at_its_four_holes(params, assembly, external):
 
 def test_a_stack_pitch_no_standoff_gives_is_named(params, external, tmp_path):
     import yaml
-    from robogene_head.params import ParameterError, load
+    from robogene_head_model.params import ParameterError, load
     from robogene_head.parts import build_all
     data = yaml.safe_load(params.path.read_text())
     data["boards"]["stack_pitch"] = 14
@@ -160,7 +160,7 @@ def test_a_stack_pitch_no_standoff_gives_is_named(params, external, tmp_path):
 
 def test_a_top_screw_too_long_for_the_standoff_is_named(params, external, tmp_path):
     import yaml
-    from robogene_head.params import ParameterError, load
+    from robogene_head_model.params import ParameterError, load
     from robogene_head.parts import build_all
     data = yaml.safe_load(params.path.read_text())
     data["purchased"]["iso7380-M3x16"] = dict(data["purchased"]["iso7380-M3x12"], length=16)

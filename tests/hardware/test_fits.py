@@ -9,7 +9,7 @@ import pytest
 import yaml
 
 from robogene_head import fits
-from robogene_head.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 from test_drawings import pdf_text, svg_text
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from robogene_head import params as P
+from robogene_head_model import params as P
 from robogene_head.parts import covers, head_frame, neck
 
 PARTS_DIR = Path(P.__file__).resolve().parent / "parts"

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 import yaml
 
-from robogene_head import params as params_mod
+from robogene_head_model import params as params_mod
 from robogene_head.harness import build as harness_build, drawing, pinout, plan, spans, spec
 from robogene_head.parts import eyes, head_frame, neck
 

@@ -6,7 +6,7 @@ import copy
 import pytest
 import yaml
 
-from robogene_head import params as P
+from robogene_head_model import params as P
 
 
 @pytest.fixture(scope="module")

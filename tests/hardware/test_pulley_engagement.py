@@ -15,7 +15,7 @@ from OCP.BRepAdaptor import BRepAdaptor_Surface
 from OCP.BRepTools import BRepTools
 from OCP.GeomAbs import GeomAbs_Cylinder
 
-from robogene_head.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 from robogene_head.parts import build_all
 
 MIN_ENGAGEMENT = 0.75   # of the shaft's length

@@ -12,7 +12,7 @@ from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import eye_accuracy, unpowered
 from robogene_head.massprops import MassProps
-from robogene_head.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 from robogene_head.parts import eye_stops
 
 

@@ -169,7 +169,7 @@ def test_a_parameter_change_travels_to_cad_and_urdf(params, board_step, tmp_path
     import yaml
     from robogene_head import external, massprops, urdf as urdf_gen
     from robogene_head.assembly import Assembly
-    from robogene_head.params import load
+    from robogene_head_model.params import load
 
     data = yaml.safe_load(params.path.read_text())
     data["joints"]["eyes_tilt"]["origin"] = [55, 0, 84]

@@ -17,7 +17,7 @@ from robogene.dev import Property
 
 pytestmark = pytest.mark.timeout(180)
 
-HEAD_INI = ROOT / "drivers" / "can" / "config" / "head.ini"
+HEAD_INI = ROOT / "drivers" / "can" / "generated" / "head.ini"
 AT_TARGET = 0.2  # deg
 
 

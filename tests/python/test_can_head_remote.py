@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The head's CAN driver from outside, every piece its own process: `robogene server`, `robogene
 can-sim` simulating the three boards on a virtual bus, `robogene dev --device robogene_can --from
-drivers/can/config/head.ini --bus virtual:...` serving them, and a remote_controlboard client in
+drivers/can/generated/head.ini --bus virtual:...` serving them, and a remote_controlboard client in
 another process (this one, or the paper's program). Each test first runs against `robogene dev
 --device test_motor --axes 6`, then unchanged against the CAN head: every joint through a position
 move and a velocity move with the encoders tracking (the Python client, encoders by RPC and on
@@ -23,7 +23,7 @@ from robogene.dev import IControlMode, IEncoders, IPositionControl, IVelocityCon
 from robogene.dev.generated.types import ControlMode
 
 ROOT = Path(__file__).resolve().parents[2]
-HEAD_INI = ROOT / "drivers" / "can" / "config" / "head.ini"
+HEAD_INI = ROOT / "drivers" / "can" / "generated" / "head.ini"
 SERVED_PORTS = ("rpc:i", "command:i", "state:o", "stateExt:o")
 
 SPEED = 30.0          # deg/s, reference speed of the position moves

@@ -3,19 +3,21 @@
 """A `board_config:` IDL file: the head's boards on one CAN bus, checked against its protocol.
 
 The numbers come from the head parameter file it names (hardware/head-parameters.yaml, the single
-source of truth for the head): joint limits, reductions and encoders through the mechanics
-package's own reader (robogene_head.params and joint_config), and the `motor_control:` section
+source of truth for the head): joint limits, reductions and encoders through the head model that the
+mechanics share (the robogene_head_model package, hardware/head-model: params and joint_config), and the
+`motor_control:` section
 (bus, board addresses, the joint on each axis, PID gains, speed and current limits) read here with
 source marks, so that a wrong value is reported as `file:line:column: error: <field>: what`.
 """
 from __future__ import annotations
 
-import importlib
 import re
-import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Optional
+
+from robogene_head_model import joint_config
+from robogene_head_model import params as params_mod
 
 from ..idl.errors import IdlError, IdlErrors, Mark
 from ..idl.loader import Document, load
@@ -195,11 +197,6 @@ class BoardConfigChecker:
 
     def _mechanics(self, pdoc: Document, path: Path, name: str) -> dict:
         """Limits, reductions and encoders as the mechanics package derives them."""
-        mech_dir = str(self.root / "hardware" / "mechanics")
-        if mech_dir not in sys.path:
-            sys.path.insert(0, mech_dir)
-        params_mod = importlib.import_module("robogene_head.params")
-        joint_config = importlib.import_module("robogene_head.joint_config")
         try:
             params = params_mod.parse(pdoc.data, name, path)
             cfg = joint_config.config(params)

@@ -11,7 +11,7 @@
 #include "rg_crc32.h"
 #include "rg_image.h"
 #include "rg_revision.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 namespace robogene::can {
 namespace {

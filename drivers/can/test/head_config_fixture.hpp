@@ -11,7 +11,7 @@
 
 namespace robogene::can::testing {
 
-inline std::string head_ini_path() { return std::string(ROBOGENE_SOURCE_DIR) + "/drivers/can/config/head.ini"; }
+inline std::string head_ini_path() { return std::string(ROBOGENE_SOURCE_DIR) + "/drivers/can/generated/head.ini"; }
 
 inline HeadConfig head_config() { return read_head_config(dev::Property::from_ini_file(head_ini_path())); }
 

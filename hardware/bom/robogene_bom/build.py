@@ -63,7 +63,7 @@ def _board_arg(arg, default: int) -> tuple[Path, int]:
 def system_lines(params, boards: int) -> list[tuple[str, float, str]]:
     """bom.system: what the head needs to move besides its own parts (supply, CAN adapter, computer, board
     assembly), each {key, qty (a number, or `boards` for one per board), for}."""
-    from robogene_head.params import Node, ParameterError
+    from robogene_head_model.params import Node, ParameterError
 
     node = params.root.node("bom")
     if not node.has("system"):

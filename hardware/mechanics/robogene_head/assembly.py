@@ -9,10 +9,11 @@ from dataclasses import dataclass
 import cadquery as cq
 import numpy as np
 
+from robogene_head_model.params import HeadParameters
+
 from . import kinematics
 from .geom import location
 from .external import ExternalGeometry
-from .params import HeadParameters
 from .parts import Part, build_all
 
 

@@ -1,20 +1,18 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: CERN-OHL-S-2.0
-"""Keep the generated tables in docs/fabricate.md equal to the package (python -m robogene_head.docs_sync).
+"""The tables docs/fabricate.md carries from the fabrication package (docs_sync.py --fab DIR --out DIR).
 
-The doc holds copies of the BOM, mass, drive-limit, drive-sizing, unpowered and eye-accuracy tables between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers;
---check (used by the tests) fails when they differ from build/fab, --update rewrites them."""
+The doc holds copies of the BOM, mass, harness, drive-limit, drive-sizing, unpowered and eye-accuracy tables
+between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers. This script writes each table's body, read from the
+package's reports, as the file OUT/NAME; the manifest's `fabrication-tables` generator (codegen/generated-
+manifest.yaml) puts them into the doc on `make generate` and compares them on `make check-generated`.
+It imports nothing but the standard library, so it runs as a plain script."""
 from __future__ import annotations
 
 import argparse
 import json
-import re
 import sys
 from pathlib import Path
-
-REPO = Path(__file__).resolve().parents[3]
-DOC = REPO / "docs" / "fabricate.md"
-
 
 def mass_table(mass: dict) -> str:
     head, ref = mass["head_above_yaw"], mass["reference"]
@@ -101,32 +99,18 @@ def blocks(fab: Path) -> dict[str, str]:
             "EYES": eyes_table(json.loads((fab / "reports" / "eye-accuracy.json").read_text()))}
 
 
-def sync(doc_text: str, wanted: dict[str, str]) -> str:
-    for name, body in wanted.items():
-        pattern = re.compile(rf"(<!-- {name}:BEGIN[^>]*-->\n).*?(<!-- {name}:END -->)", re.S)
-        if not pattern.search(doc_text):
-            raise ValueError(f"{DOC}: no <!-- {name}:BEGIN --> ... <!-- {name}:END --> block")
-        doc_text = pattern.sub(lambda m: m.group(1) + body + m.group(2), doc_text)
-    return doc_text
-
-
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--fab", type=Path, default=REPO / "build" / "fab")
-    ap.add_argument("--doc", type=Path, default=DOC)
-    mode = ap.add_mutually_exclusive_group(required=True)
-    mode.add_argument("--check", action="store_true")
-    mode.add_argument("--update", action="store_true")
+    ap.add_argument("--fab", type=Path, required=True, help="the fabrication package (build/fab)")
+    ap.add_argument("--out", type=Path, required=True, help="where to write one file per table")
     args = ap.parse_args(argv)
-    current = args.doc.read_text()
-    wanted = sync(current, blocks(args.fab))
-    if args.update:
-        args.doc.write_text(wanted)
-        return 0
-    if wanted != current:
-        print(f"{args.doc}: generated tables differ from {args.fab}; run python -m robogene_head.docs_sync --update",
-              file=sys.stderr)
+    try:
+        tables = blocks(args.fab)
+    except FileNotFoundError as exc:
+        print(f"docs_sync: {exc.filename}: missing; build the fabrication package first (make fab)", file=sys.stderr)
         return 1
+    for name, body in tables.items():
+        (args.out / name).write_text(body, encoding="utf-8")
     return 0
 
 

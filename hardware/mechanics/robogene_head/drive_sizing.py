@@ -23,9 +23,10 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from . import drive_limits
+from robogene_head_model import drive_limits
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, Node, ParameterError
+
 from .massprops import MassProps, combine
-from .params import CHAIN_JOINTS, HeadParameters, Node, ParameterError
 from .pose_search import Chain, Worst
 
 

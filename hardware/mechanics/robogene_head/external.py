@@ -10,8 +10,9 @@ from pathlib import Path
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters
+
 from . import board_model, mesh_solid, openscad
-from .params import HeadParameters
 
 FACE_PLATE = "face_plate"   # the OpenSCAD printable that sits on the head; the others are loose (docs/fabricate.md)
 

@@ -16,8 +16,8 @@ import json
 import math
 from dataclasses import asdict, dataclass
 
-from . import drive_limits
-from .params import HeadParameters
+from robogene_head_model import drive_limits
+from robogene_head_model.params import HeadParameters
 
 PANS = ("left_eye_pan", "right_eye_pan")
 

@@ -18,9 +18,12 @@ from pathlib import Path
 
 import numpy as np
 
+from robogene_head_model import joint_config
+from robogene_head_model.params import ParameterError, load
+
 from . import external as external_mod
-from . import (drive_sizing, eye_accuracy, fits, freecad, joint_config, kinematics, massprops, openscad, render,
-               render_steps, sequence, threads, unpowered, urdf)
+from . import (drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
+               sequence, threads, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
@@ -29,7 +32,6 @@ from .export import link_solid, shape_hash, write_step, write_stl
 from .harness import build as harness_build
 from .harness.pinout import PinoutError
 from .mesh_solid import MeshSolidError
-from .params import ParameterError, load
 from .progress import Progress
 
 MECHANICS = Path(__file__).resolve().parents[1]

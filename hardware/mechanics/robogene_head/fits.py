@@ -20,9 +20,10 @@ from dataclasses import dataclass
 from OCP.BRepAdaptor import BRepAdaptor_Surface
 from OCP.GeomAbs import GeomAbs_Cylinder
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from . import kinematics
 from .geom import location
-from .params import HeadParameters, ParameterError
 
 TOL = 1e-3    # mm: a seat and a ring share axis and diameter to this
 

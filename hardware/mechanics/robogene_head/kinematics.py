@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .params import CHAIN_JOINTS, CONTROL_JOINTS, HeadParameters
+from robogene_head_model.params import CHAIN_JOINTS, CONTROL_JOINTS, HeadParameters
 
 ROOT_LINK = "neck_base"
 

@@ -13,7 +13,8 @@ import numpy as np
 from OCP.BRepGProp import BRepGProp
 from OCP.GProp import GProp_GProps
 
-from .params import HeadParameters
+from robogene_head_model.params import HeadParameters
+
 from .parts import Part
 
 

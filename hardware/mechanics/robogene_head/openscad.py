@@ -9,7 +9,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from .params import HeadParameters
+from robogene_head_model.params import HeadParameters
 
 SCAD_DIR = Path(__file__).resolve().parents[1] / "scad"
 

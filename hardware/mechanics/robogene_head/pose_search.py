@@ -16,8 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters
+
 from .massprops import MassProps
-from .params import CHAIN_JOINTS, HeadParameters
 
 GRAVITY = 9.80665                  # m/s^2, along -z of the neck base
 GRID_SAMPLES = 5                   # per joint, for the starting poses

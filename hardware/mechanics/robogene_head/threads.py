@@ -16,7 +16,7 @@ from OCP.BRepAdaptor import BRepAdaptor_Surface
 from OCP.GeomAbs import GeomAbs_Cylinder
 from OCP.gp import gp_Dir, gp_Pnt
 
-from .params import HeadParameters
+from robogene_head_model.params import HeadParameters
 
 TOL = 1e-3      # mm: a shank and a hole share their axis and diameter to this
 

@@ -17,9 +17,10 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters
+
 from .drive_sizing import required_margin, with_payloads
 from .massprops import MassProps
-from .params import CHAIN_JOINTS, HeadParameters
 from .pose_search import Chain
 
 STEP_DEG = 0.1

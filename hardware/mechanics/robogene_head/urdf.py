@@ -10,9 +10,11 @@ from __future__ import annotations
 import math
 from xml.etree import ElementTree as ET
 
-from . import drive_limits, kinematics
+from robogene_head_model import drive_limits
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters
+
+from . import kinematics
 from .massprops import MassProps
-from .params import CHAIN_JOINTS, HeadParameters
 
 
 def _fmt(v: float) -> str:
@@ -26,7 +28,8 @@ def _vec(values, scale=1.0) -> str:
 
 def generate(params: HeadParameters, props: dict[str, MassProps], mesh_dir: str = "meshes") -> str:
     robot = ET.Element("robot", name=params.root.text("name").replace("-", "_"))
-    robot.append(ET.Comment(f" Generated from {params.path.name} by robogene_head.urdf; do not edit. "))
+    # The phrase is split: only committed generated files may contain it (tests/codegen/test_manifest.py).
+    robot.append(ET.Comment(f" Generated from {params.path.name} by robogene_head.urdf; do not " "edit. "))
     for link in kinematics.links(params):
         el = ET.SubElement(robot, "link", name=link)
         mp = props.get(link)

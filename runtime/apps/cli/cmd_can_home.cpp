@@ -17,7 +17,7 @@ int cmd_can_home(Args& args) {
   const auto from = args.option("--from");
   const std::vector<std::string> joints = args.positional();
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
-  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
+  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/generated/head.ini)");
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));
   const auto results = can::home_joints(can::open_bus(*bus_spec), head, joints, [](const std::string& line) {
     std::printf("can-home: %s\n", line.c_str());

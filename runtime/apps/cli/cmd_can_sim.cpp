@@ -44,7 +44,7 @@ int cmd_can_sim(Args& args) {
   const auto flash_dir = args.option("--flash-dir");
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
-  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/config/head.ini)");
+  if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/generated/head.ini)");
   const double seconds = duration ? parse_seconds(*duration, "--duration") : -1.0;
 
   if (flash_dir && bus_spec->rfind("virtual:", 0) == 0) {

@@ -8,7 +8,6 @@ from ...can.model import SCALARS, CanField, CanProtocol, scalar_range
 from ...idl.model import Idl
 from ..common import environment, line_comment_header, snake
 
-OUT_DIR = "drivers/can/generated"
 
 
 def field_type(f: CanField) -> str:
@@ -117,6 +116,6 @@ def emit(idl: Idl) -> dict[str, str]:
     for proto in idl.can_protocols:
         header = line_comment_header("//", "BSD-3-Clause", [proto.file])
         ctx = {"p": proto, "header": header, "include": f"{proto.name}.hpp"}
-        out[f"{OUT_DIR}/{proto.name}.hpp"] = env.get_template("protocol.hpp.j2").render(ctx)
-        out[f"{OUT_DIR}/{proto.name}.cpp"] = env.get_template("protocol.cpp.j2").render(ctx)
+        out[f"{proto.name}.hpp"] = env.get_template("protocol.hpp.j2").render(ctx)
+        out[f"{proto.name}.cpp"] = env.get_template("protocol.cpp.j2").render(ctx)
     return out

@@ -11,7 +11,7 @@ import json
 
 from ..common import (all_sources, environment, help_lines, identifier, line_comment_header,
                       param_name, vocab_text)
-from ..cpp_interfaces import INCLUDE_DIR, cpp_type, header_name, in_param, out_param, value_type
+from ..cpp_interfaces import cpp_type, header_name, in_param, out_param, value_type
 
 
 def cpp_signature(m: Method, qualified: str = "") -> str:
@@ -19,7 +19,6 @@ def cpp_signature(m: Method, qualified: str = "") -> str:
     params = [in_param(a) for a in m.args] + [out_param(r) for r in m.results]
     return f"bool {qualified}{m.cpp_name}({', '.join(params)})"
 
-SOURCE_DIR = "runtime/src/dev/generated"
 
 
 @dataclass
@@ -125,24 +124,42 @@ def client_methods(service: Service) -> list:
 
 
 
-def emit(idl: Idl) -> dict[str, str]:
+def headers(idl: Idl) -> dict[str, str]:
+    """The public headers: the wire types, and each service's server and client class."""
+    env, helpers = _environment()
+    sources = [f for f in all_sources(idl) if any(t.mark.file == f for t in idl.enums + idl.structs)]
+    out = {"wire_types.hpp": env.get_template("wire_types.hpp.j2").render(
+        header=line_comment_header("//", "BSD-3-Clause", sources), idl=idl, **helpers)}
+    for s in idl.services:
+        ctx = _service_context(s, helpers)
+        out[f"{s.name}_server.hpp"] = env.get_template("server.hpp.j2").render(**ctx)
+        out[f"{s.name}_client.hpp"] = env.get_template("client.hpp.j2").render(**ctx)
+    return out
+
+
+def sources(idl: Idl) -> dict[str, str]:
+    """Each service's server dispatch and client implementation."""
+    env, helpers = _environment()
+    out = {}
+    for s in idl.services:
+        ctx = _service_context(s, helpers)
+        out[f"{s.name}_server.cpp"] = env.get_template("server.cpp.j2").render(**ctx)
+        out[f"{s.name}_client.cpp"] = env.get_template("client.cpp.j2").render(**ctx)
+    return out
+
+
+def _environment():
     env = environment(__file__)
     helpers = dict(failure=failure, usage_literals=usage_literals, command_routes=command_routes, cpp_type=cpp_type, client_methods=client_methods, cpp_signature=cpp_signature, routes=routes, route_init=route_init, read_condition=read_condition, call_args=call_args, member=member, local_type=local_type, reader=reader,
                    writer=writer, param_name=param_name, class_name=class_name,
                    header_name=header_name, identifier=identifier, vocab_text=vocab_text)
-    out = {}
-    sources = [f for f in all_sources(idl) if any(t.mark.file == f for t in idl.enums + idl.structs)]
-    out[f"{INCLUDE_DIR}/wire_types.hpp"] = env.get_template("wire_types.hpp.j2").render(
-        header=line_comment_header("//", "BSD-3-Clause", sources), idl=idl, **helpers)
-    for s in idl.services:
-        files = sorted({s.file} | {i.file for i in s.interfaces} |
-                       {t.mark.file for i in s.interfaces for t in list(i.enums) + list(i.structs)})
-        header = line_comment_header("//", "BSD-3-Clause", files)
-        max_path = max([len(r.wire) for r in routes(s)] + [len(h) for h, _ in command_routes(s)] +
-                       [len(s.protocol.wire) if s.protocol else 1, len(s.introspection or ())])
-        ctx = dict(header=header, s=s, max_path=max_path, **helpers)
-        out[f"{INCLUDE_DIR}/{s.name}_server.hpp"] = env.get_template("server.hpp.j2").render(**ctx)
-        out[f"{SOURCE_DIR}/{s.name}_server.cpp"] = env.get_template("server.cpp.j2").render(**ctx)
-        out[f"{INCLUDE_DIR}/{s.name}_client.hpp"] = env.get_template("client.hpp.j2").render(**ctx)
-        out[f"{SOURCE_DIR}/{s.name}_client.cpp"] = env.get_template("client.cpp.j2").render(**ctx)
-    return out
+    return env, helpers
+
+
+def _service_context(s, helpers: dict) -> dict:
+    files = sorted({s.file} | {i.file for i in s.interfaces} |
+                   {t.mark.file for i in s.interfaces for t in list(i.enums) + list(i.structs)})
+    header = line_comment_header("//", "BSD-3-Clause", files)
+    max_path = max([len(r.wire) for r in routes(s)] + [len(h) for h, _ in command_routes(s)] +
+                   [len(s.protocol.wire) if s.protocol else 1, len(s.introspection or ())])
+    return dict(header=header, s=s, max_path=max_path, **helpers)

@@ -7,7 +7,6 @@ from ...idl.model import Field, Idl, Method, TypeRef
 from ..common import (all_sources, described, environment, identifier, interface_sources,
                       line_comment_header, param_name, vocab_int, wire_vocabs)
 
-INCLUDE_DIR = "runtime/include/robogene/dev/generated"
 
 _SCALARS = {"joint": "int", "int32": "std::int32_t", "float64": "double", "bool": "bool",
             "string": "std::string", "vocab": "robogene::vocab_t", "image_rgb": "ImageRgb"}
@@ -76,16 +75,16 @@ def emit(idl: Idl) -> dict[str, str]:
                    vocab_int=vocab_int, identifier=identifier, header_name=header_name)
     out = {}
     sources = [f for f in all_sources(idl) if any(t.mark.file == f for t in idl.enums + idl.structs)]
-    out[f"{INCLUDE_DIR}/types.hpp"] = env.get_template("types.hpp.j2").render(
+    out[f"types.hpp"] = env.get_template("types.hpp.j2").render(
         header=line_comment_header("//", "BSD-3-Clause", sources), idl=idl, **helpers)
-    out[f"{INCLUDE_DIR}/vocabs.hpp"] = env.get_template("vocabs.hpp.j2").render(
+    out[f"vocabs.hpp"] = env.get_template("vocabs.hpp.j2").render(
         header=line_comment_header("//", "BSD-3-Clause", all_sources(idl)), vocabs=wire_vocabs(idl),
         **helpers)
     for iface in idl.interfaces:
-        out[f"{INCLUDE_DIR}/{header_name(iface.name)}"] = env.get_template("interface.hpp.j2").render(
+        out[header_name(iface.name)] = env.get_template("interface.hpp.j2").render(
             header=line_comment_header("//", "BSD-3-Clause", interface_sources(iface, idl)),
             iface=iface, needs_image=any(r.type.name == "image_rgb" for m in iface.methods
                                          for r in m.results), **helpers)
-    out[f"{INCLUDE_DIR}/interfaces.hpp"] = env.get_template("interfaces.hpp.j2").render(
+    out[f"interfaces.hpp"] = env.get_template("interfaces.hpp.j2").render(
         header=line_comment_header("//", "BSD-3-Clause", all_sources(idl)), idl=idl, **helpers)
     return out

@@ -1,13 +1,12 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""The Markdown reference of every interface and service, for docs/interfaces/."""
+"""The Markdown reference of every interface and service, for docs/generated/interfaces/."""
 from __future__ import annotations
 
 from ...idl.model import Field, Idl, Method
 from ..common import (all_sources, described, environment, html_comment_header,
                       interface_sources, param_name, vocab_int)
 
-DOCS_DIR = "docs/interfaces"
 
 
 def field_text(f: Field) -> str:
@@ -47,9 +46,9 @@ def emit(idl: Idl) -> dict[str, str]:
                    described=described, cell=cell, vocab_int=vocab_int)
     out = {}
     for iface in idl.interfaces:
-        out[f"{DOCS_DIR}/{iface.name}.md"] = env.get_template("interface.md.j2").render(
+        out[f"{iface.name}.md"] = env.get_template("interface.md.j2").render(
             header=html_comment_header("CC-BY-SA-4.0", interface_sources(iface, idl)), iface=iface,
             **helpers)
-    out[f"{DOCS_DIR}/README.md"] = env.get_template("index.md.j2").render(
+    out[f"README.md"] = env.get_template("index.md.j2").render(
         header=html_comment_header("CC-BY-SA-4.0", all_sources(idl)), idl=idl, **helpers)
     return out

@@ -1,13 +1,12 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""Markdown tables of each CAN protocol and board configuration, for docs/can/."""
+"""Markdown tables of each CAN protocol and board configuration, for docs/generated/can/."""
 from __future__ import annotations
 
 from ...can.model import CanField, CanProtocol
 from ...idl.model import Idl
 from ..common import environment, html_comment_header
 
-OUT_DIR = "docs/can"
 
 
 def number(x: float) -> str:
@@ -43,19 +42,30 @@ def _environment():
     return env
 
 
+# The protocol whose summary docs/electronics.md carries.
+SUMMARY_PROTOCOL = "motor_control"
+
+
 def summary(p: CanProtocol) -> str:
-    """The identifier layout, the classes and the command and broadcast tables in brief: the
-    block docs/electronics.md carries (doc_blocks.py keeps it current)."""
+    """The identifier layout, the classes and the command and broadcast tables in brief."""
     return _environment().get_template("protocol_summary.md.j2").render(p=p)
+
+
+def summary_blocks(idl: Idl) -> dict[str, str]:
+    """The CAN_PROTOCOL block of docs/electronics.md: the summary of the head's protocol."""
+    protocol = next((p for p in idl.can_protocols if p.name == SUMMARY_PROTOCOL), None)
+    if protocol is None:
+        raise LookupError(f"interfaces/idl: no can_protocol named {SUMMARY_PROTOCOL!r}")
+    return {"CAN_PROTOCOL": summary(protocol)}
 
 
 def emit(idl: Idl) -> dict[str, str]:
     env = _environment()
     out = {}
     for p in idl.can_protocols:
-        out[f"{OUT_DIR}/{p.name}.md"] = env.get_template("protocol.md.j2").render(
+        out[f"{p.name}.md"] = env.get_template("protocol.md.j2").render(
             p=p, header=html_comment_header("CC-BY-SA-4.0", [p.file]))
     for c in idl.board_configs:
-        out[f"{OUT_DIR}/{c.name}.md"] = env.get_template("board_config.md.j2").render(
+        out[f"{c.name}.md"] = env.get_template("board_config.md.j2").render(
             c=c, header=html_comment_header("CC-BY-SA-4.0", c.sources))
     return out

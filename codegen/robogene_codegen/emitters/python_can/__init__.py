@@ -7,7 +7,6 @@ from ...can.model import CanField, scalar_range
 from ...idl.model import Idl
 from ..common import environment, line_comment_header
 
-PACKAGE_DIR = "runtime/python/robogene/can/generated"
 
 
 def py_type(f: CanField) -> str:
@@ -44,10 +43,10 @@ def emit(idl: Idl) -> dict[str, str]:
     modules = []
     for proto in idl.can_protocols:
         header = line_comment_header("#", "BSD-3-Clause", [proto.file])
-        out[f"{PACKAGE_DIR}/{proto.name}.py"] = env.get_template("protocol.py.j2").render(p=proto, header=header)
+        out[f"{proto.name}.py"] = env.get_template("protocol.py.j2").render(p=proto, header=header)
         modules.append(proto.name)
     if modules:
         sources = sorted(p.file for p in idl.can_protocols)
-        out[f"{PACKAGE_DIR}/__init__.py"] = env.get_template("__init__.py.j2").render(
+        out[f"__init__.py"] = env.get_template("__init__.py.j2").render(
             header=line_comment_header("#", "BSD-3-Clause", sources), modules=modules)
     return out

@@ -7,7 +7,6 @@ from ...idl.model import Field, Idl, Method, TypeRef
 from ..common import (all_sources, described, environment, help_lines, identifier,
                       line_comment_header, param_name, vocab_int, wire_vocabs)
 
-PACKAGE_DIR = "runtime/python/robogene/dev/generated"
 
 _SCALARS = {"joint": "int", "int32": "int", "float64": "float", "bool": "bool", "string": "str",
             "vocab": "int", "image_rgb": "ImageRgb"}
@@ -74,6 +73,6 @@ def emit(idl: Idl) -> dict[str, str]:
     header = line_comment_header("#", "BSD-3-Clause", all_sources(idl))
     out = {}
     for name in ("__init__.py", "types.py", "interfaces.py", "wire.py", "clients.py"):
-        out[f"{PACKAGE_DIR}/{name}"] = env.get_template(f"{name}.j2").render(
+        out[name] = env.get_template(f"{name}.j2").render(
             header=header, idl=idl, vocabs=wire_vocabs(idl), **helpers)
     return out

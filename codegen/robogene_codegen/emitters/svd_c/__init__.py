@@ -4,7 +4,7 @@
 
 Reads hardware/electronics/firmware/stm32/*.svd (device, peripherals with baseAddress and
 derivedFrom, registers with addressOffset, fields with bitOffset/bitWidth) and writes one C header
-per file beside it: <PERIPH>_BASE, <PERIPH>_<REG> as a volatile lvalue and its _OFFSET, and for the peripheral that
+per file, <device>_regs.h (into the folder the manifest names): <PERIPH>_BASE, <PERIPH>_<REG> as a volatile lvalue and its _OFFSET, and for the peripheral that
 defines a layout <PERIPH>_<REG>_<FIELD>_Pos / _Msk. A derived peripheral gets its base, its
 registers and its parent's field macros under its own name. Output is sorted by the file's own
 order, so it is byte-identical on every run.
@@ -14,14 +14,12 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from ...idl.model import Idl
 from ..common import line_comment_header
 
-REPO_ROOT = Path(__file__).resolve().parents[4]
 SVD_DIR = "hardware/electronics/firmware/stm32"
 
 
-class SvdError(Exception):
+class SvdError(ValueError):
     pass
 
 
@@ -79,7 +77,7 @@ def parse(path: Path) -> list[dict]:
 
 def render(path: Path, source: str) -> str:
     guard = path.stem.upper() + "_REGS_H"
-    lines = [line_comment_header("//", "BSD-3-Clause", [source]).rstrip("\n"), "//",
+    lines = [line_comment_header("//", "BSD-3-Clause", [source], change="the SVD file").rstrip("\n"), "//",
              f"// Register access for {path.stem.upper()}: <PERIPH>_<REG> is the register (volatile uint32_t),",
              "// <PERIPH>_<REG>_OFFSET its offset in the peripheral, <PERIPH>_<REG>_<FIELD>_Pos and _Msk its fields.",
              f"#ifndef {guard}", f"#define {guard}", "", "#include <stdint.h>", "",
@@ -99,10 +97,9 @@ def render(path: Path, source: str) -> str:
     return "\n".join(lines)
 
 
-def emit(idl: Idl) -> dict[str, str]:
-    del idl  # the device description is not IDL; it sits beside the firmware that uses it
+def emit(root: Path) -> dict[str, str]:
+    """One header per device description in the repository's SVD folder."""
     out = {}
-    for path in sorted((REPO_ROOT / SVD_DIR).glob("*.svd")):
-        source = f"{SVD_DIR}/{path.name}"
-        out[f"{SVD_DIR}/{path.stem}_regs.h"] = render(path, source)
+    for path in sorted((root / SVD_DIR).glob("*.svd")):
+        out[f"{path.stem}_regs.h"] = render(path, f"{SVD_DIR}/{path.name}")
     return out

@@ -5,7 +5,7 @@
 // (encoders, position, velocity, control mode) plus PID, so `robogene dev --device robogene_can
 // --from head.ini` serves the real head exactly as it serves the simulated one.
 //
-// Configuration: the head's board config (drivers/can/config/head.ini: [CAN], [GENERAL], [LIMITS],
+// Configuration: the head's board config (drivers/can/generated/head.ini: [CAN], [GENERAL], [LIMITS],
 // [VELOCITY], [PIDS], [COUPLING_n]) plus, at top level: bus (socketcan:IFACE or virtual:NAME,
 // default socketcan:<[CAN] device>), can_log (a candump log of this node's traffic),
 // ref_speed (deg/s, default 10), ref_acceleration (deg/s^2, default 50).

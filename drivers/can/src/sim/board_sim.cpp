@@ -12,7 +12,7 @@
 #include "robogene/can/firmware_image.hpp"
 #include "robogene/can/sim/sim_flash.hpp"
 #include "robogene/error.hpp"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 namespace robogene::can::sim {
 

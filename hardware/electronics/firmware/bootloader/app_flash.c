@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 extern const uint8_t rg_app_region[];
 extern const uint8_t rg_app_region_size[];  // a linker symbol: its address is the size

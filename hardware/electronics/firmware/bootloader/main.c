@@ -17,9 +17,9 @@
 #include "handoff.h"
 #include "rg_boot.h"
 #include "rg_revision.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 #include "settings.h"
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 #ifndef ROBOGENE_BOARD_ADDRESS
 #error "build one bootloader per board: -DROBOGENE_BOARD_ADDRESS=<the board's address in the head table>"

@@ -7,7 +7,7 @@
 
 #include "rg_broadcasts.h"
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 float rg_board_period_s(const rg_board_t *b) { return (float)b->params.control_period_us * 1e-6f; }
 

@@ -10,7 +10,7 @@
 #include "rg_board.h"
 #include "rg_revision.h"
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 static void identify(const rg_board_t *b, const rg_can_frame_t *in, unsigned source) {
   rg_can_frame_t f;

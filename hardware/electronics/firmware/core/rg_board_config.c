@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-#include "robogene_head_board_config.h"
+#include "generated/robogene_head_board_config.h"
 
 static void axis_from_config(const robogene_axis_config_t *c, rg_axis_params_t *p) {
   memset(p, 0, sizeof *p);

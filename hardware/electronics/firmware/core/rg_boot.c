@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 static bool region_read(void *ctx, uint32_t offset, uint8_t *out, uint32_t len) {
   const rg_boot_hal_t *hal = (const rg_boot_hal_t *)ctx;

@@ -6,7 +6,7 @@
 
 #include "rg_board.h"
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 enum { SLOT_POSITION, SLOT_PID_OUTPUT, SLOT_STATUS, SLOT_CURRENT, SLOT_VELOCITY, SLOT_SUPPLY };
 

@@ -5,7 +5,7 @@
 #include <math.h>
 
 #include "rg_board.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 bool rg_homing_start(struct rg_board *b, unsigned axis, int16_t pwm_limit, float speed) {
   rg_axis_t *a = &b->axes[axis];

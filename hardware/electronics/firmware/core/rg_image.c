@@ -6,7 +6,7 @@
 
 #include "rg_crc32.h"
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 _Static_assert(sizeof(rg_image_header_t) == RG_IMAGE_HEADER_SIZE, "the header is 32 bytes in flash");
 

@@ -8,7 +8,7 @@
 
 #include "rg_board.h"
 #include "rg_wire.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 typedef struct {
   rg_board_t *b;

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "clock.h"
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 void clock_init(void) {
   RCC_CR |= RCC_CR_HSEON_Msk;

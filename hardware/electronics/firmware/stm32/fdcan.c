@@ -4,8 +4,8 @@
 
 #include "board_pins.h"
 #include "gpio.h"
-#include "robogene_can_motor_control.h"
-#include "stm32g431_regs.h"
+#include "generated/robogene_can_motor_control.h"
+#include "generated/stm32g431_regs.h"
 
 // The message RAM of FDCAN1 has a fixed layout on the STM32G4 (RM0440 44.3.3): 28 standard
 // filters, 8 extended filters, two 3-element RX FIFOs, a 3-element TX event FIFO and 3 TX buffers,

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "gpio.h"
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 // Register offsets are the same on every port (GPIOB derives its layout from GPIOA).
 #define PORT_REG(port, reg) RG_REG32((port) + GPIOA_##reg##_OFFSET)

@@ -4,7 +4,7 @@
 
 #include <stdint.h>
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 extern volatile uint32_t rg_boot_handoff[4];
 

@@ -8,7 +8,7 @@
 #include "rg_board.h"
 #include "rg_image.h"
 #include "rg_revision.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 #ifndef ROBOGENE_BOARD_ADDRESS
 #error "build one image per board: -DROBOGENE_BOARD_ADDRESS=<the board's address in the head table>"

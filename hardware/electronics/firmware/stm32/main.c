@@ -16,9 +16,9 @@
 #include "motor_io.h"
 #include "rg_board.h"
 #include "rg_board_config.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 #include "settings.h"
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 #include "watchdog.h"
 
 #ifndef ROBOGENE_BOARD_ADDRESS

@@ -5,7 +5,7 @@
 #include "board_pins.h"
 #include "clock.h"
 #include "gpio.h"
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 // Timer registers by base: TIM15, TIM2 and TIM4 share TIM1's offsets for what is used here.
 #define TIM(base, reg) RG_REG32((base) + TIM1_##reg##_OFFSET)

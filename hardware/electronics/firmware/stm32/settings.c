@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "settings.h"
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 extern const uint32_t rg_settings_page[];
 

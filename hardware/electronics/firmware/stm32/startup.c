@@ -6,7 +6,7 @@
 // so an interrupt that fires is a fault, and the watchdog resets the board out of the trap.
 #include <stdint.h>
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 extern uint32_t _stack_top, _data_load, _data_start, _data_end, _bss_start, _bss_end;
 int main(void);

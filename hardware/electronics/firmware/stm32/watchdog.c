@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "watchdog.h"
 
-#include "stm32g431_regs.h"
+#include "generated/stm32g431_regs.h"
 
 #define IWDG_KEY_START 0xCCCCu
 #define IWDG_KEY_REFRESH 0xAAAAu

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "rg_board.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 namespace rg_test {
 

@@ -15,7 +15,7 @@
 #include "rg_boot.h"
 #include "rg_crc32.h"
 #include "rg_image.h"
-#include "robogene_can_motor_control.h"
+#include "generated/robogene_can_motor_control.h"
 
 namespace rg_test {
 

@@ -22,9 +22,10 @@ import fcl
 import numpy as np
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
+from robogene_head_model.params import CONTROL_JOINTS, HeadParameters
+
 from .. import kinematics
 from ..assembly import Assembly, Placed
-from ..params import CONTROL_JOINTS, HeadParameters
 
 VOLUME_TOLERANCE = 0.5   # mm^3: below this a common volume is boolean noise on touching faces
 NEAR = 5.0               # mm: closest approaches above this are not reported

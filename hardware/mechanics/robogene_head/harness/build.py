@@ -9,9 +9,10 @@ import hashlib
 import json
 from pathlib import Path
 
+from robogene_head_model.params import HeadParameters
+
 from ..cache import Cache, digest
 from ..geom import exact_bounds
-from ..params import HeadParameters
 from . import drawing, pinout, plan, report, spec
 
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))

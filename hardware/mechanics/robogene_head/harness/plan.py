@@ -11,9 +11,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
+
 from .. import kinematics
 from ..geom import exact_bounds
-from ..params import CHAIN_JOINTS, HeadParameters, ParameterError
 from . import pinout, spans
 from .spec import HOST, CableClass, Clamp, HarnessSpec
 

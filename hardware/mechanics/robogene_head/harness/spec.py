@@ -8,8 +8,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
 from .. import kinematics
-from ..params import HeadParameters, Node, ParameterError
 
 # Diameter of the smallest circle around n equal round wires, in wire diameters (circle packing): the outer
 # diameter of a twisted group of n wires.

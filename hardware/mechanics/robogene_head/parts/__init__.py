@@ -3,8 +3,9 @@
 """Every part of the head, grouped by family; build_all() returns them placed in their link frames."""
 from __future__ import annotations
 
+from robogene_head_model.params import HeadParameters
+
 from ..external import ExternalGeometry
-from ..params import HeadParameters
 from .base import Part
 from . import board_stack, boards, covers, eyes, face, head_frame, neck
 

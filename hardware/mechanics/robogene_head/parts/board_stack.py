@@ -13,9 +13,10 @@ from __future__ import annotations
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from .. import geom
 from ..board_model import BoardModel
-from ..params import HeadParameters, ParameterError
 from . import purchased
 from .base import Part, loc
 

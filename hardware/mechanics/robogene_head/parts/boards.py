@@ -3,8 +3,9 @@
 """The three motor-control boards in the neck base's board bay: the KiCad board STEP, placed once per board."""
 from __future__ import annotations
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from ..board_model import BoardModel
-from ..params import HeadParameters, ParameterError
 from .base import COMPONENTS_MATERIAL, GREEN, PCB_MATERIAL, Part, loc
 
 DESIGN = "motor_board"

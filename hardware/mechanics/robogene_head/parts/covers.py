@@ -3,8 +3,9 @@
 """Printed covers: the head's back shell and the skirt around the board bay in the neck base (geometry.covers)."""
 from __future__ import annotations
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, ParameterError
 from .base import PRINTED, Part
 
 

@@ -14,8 +14,9 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, Node, ParameterError
 from . import purchased
 from .base import Part, loc
 

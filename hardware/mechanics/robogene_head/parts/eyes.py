@@ -3,8 +3,9 @@
 """Eye-tilt frame, eye cups with their camera mounts, eye-pan drives and the tilt pulley."""
 from __future__ import annotations
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, ParameterError
 from . import eye_stops, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 

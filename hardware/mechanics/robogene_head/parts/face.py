@@ -6,9 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from robogene_head_model.params import HeadParameters
+
 from .. import geom
 from ..external import ExternalGeometry
-from ..params import HeadParameters
 from . import purchased
 from .base import Part, loc
 

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, Node, ParameterError
 from . import purchased
 from .base import Part, loc
 

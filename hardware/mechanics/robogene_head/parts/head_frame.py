@@ -7,8 +7,9 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, Node, ParameterError
 from . import gearhead_screws, head_joins, mounts, neck, purchased
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"

@@ -11,8 +11,9 @@ from dataclasses import dataclass, field
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, Node
+
 from .. import geom
-from ..params import HeadParameters, Node
 from . import gearhead_screws, mounts, purchased
 from .base import Part, loc
 

@@ -7,8 +7,9 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, Node, ParameterError
 from . import gearhead_screws
 
 FIXING_SCREW = "iso7380-M3x8"   # what holds a mount plate on the structure

@@ -3,8 +3,9 @@
 """Neck base (plates, uprights, board bay), pitch stage and roll stage, with their drives."""
 from __future__ import annotations
 
+from robogene_head_model.params import HeadParameters, ParameterError
+
 from .. import geom
-from ..params import HeadParameters, ParameterError
 from . import board_stack, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 

@@ -9,8 +9,9 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model.params import HeadParameters
+
 from .. import geom
-from ..params import HeadParameters
 from .base import DARK, GREEN, STEEL, Part, loc
 
 

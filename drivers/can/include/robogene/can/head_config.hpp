@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// The head's board configuration (drivers/can/config/head.ini, generated from the head parameter
+// The head's board configuration (drivers/can/generated/head.ini, generated from the head parameter
 // file), read and checked once for the driver and the simulator. A wrong or missing field throws
 // dev::ConfigError naming the file, line, group and key ("head.ini:31: [GENERAL] key 'axis': ...").
 #pragma once
