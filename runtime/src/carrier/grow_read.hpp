@@ -34,4 +34,16 @@ void append_growing(In& in, std::vector<std::uint8_t>& v, std::size_t n, Receivi
   }
 }
 
+// Gives a message's (or reply's) bytes back to the process total when it is complete or fails.
+class ReleaseOnExit {
+ public:
+  explicit ReleaseOnExit(ReceivingBytes& budget) : budget_(budget) {}
+  ~ReleaseOnExit() { budget_.release(); }
+  ReleaseOnExit(const ReleaseOnExit&) = delete;
+  ReleaseOnExit& operator=(const ReleaseOnExit&) = delete;
+
+ private:
+  ReceivingBytes& budget_;
+};
+
 }  // namespace robogene::carrier::detail
