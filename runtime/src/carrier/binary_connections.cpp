@@ -126,7 +126,7 @@ void BinaryOutbound::await_completion(Bottle* reply) {
     reply_bytes_.clear();
     DecodeLimits limits;
     limits.max_bytes = max_reply_size_;
-    ReleaseOnExit release(reply_budget_);
+    ReleaseOnExit release(reply_budget_, &reply_bytes_);
     read_bottle_bytes(link_->reader, reply_bytes_, limits, first8, &reply_budget_);
     if (reply) *reply = Bottle::from_bytes(reply_bytes_, limits);
   }

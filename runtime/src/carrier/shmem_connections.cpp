@@ -147,7 +147,7 @@ void ShmemOutbound::await_completion(Bottle* reply) {
     reply_bytes_.clear();
     DecodeLimits limits;
     limits.max_bytes = max_reply_size_;
-    ReleaseOnExit release(reply_budget_);
+    ReleaseOnExit release(reply_budget_, &reply_bytes_);
     read_bottle_bytes_from(*ch_->rx, reply_bytes_, limits, first8, &reply_budget_);
     if (reply) *reply = Bottle::from_bytes(reply_bytes_, limits);
   }
