@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import re
 import shutil
+import struct
+import zlib
 from pathlib import Path
 
 import robogene
@@ -53,6 +55,40 @@ def carrier_accept() -> dict[str, bytes]:
     for name in ("udp", "mcast", "shmem"):
         seeds[f"{name}-handshake"] = bytes([carrier_index(name), well_formed])
     return seeds
+
+
+def datagram_records(flags: int, datagrams: list[tuple[int, int, bytes]]) -> bytes:
+    """Input of udp/mcast_datagram_fuzz (datagram_fuzz_harness.hpp): flags, then per datagram
+    `ctl, len (big-endian), [crc], [counter], body`; crc and counter only where the flags leave
+    them to the input. Each datagram is (ctl, counter, body)."""
+    out = bytearray([flags])
+    for ctl, counter, body in datagrams:
+        out += bytes([ctl]) + struct.pack(">H", len(body))
+        if not flags & 1:
+            out += struct.pack("<I", zlib.crc32(body))  # the CRC covers what follows the prefix
+        if not flags & 2:
+            out += struct.pack("<i", counter)
+        out += body
+    return bytes(out)
+
+
+def datagram() -> dict[str, bytes]:
+    # The tcp frames again: a udp or mcast writer sends the same index + PortCommand + payload,
+    # cut into datagrams each prefixed `crc32(rest), counter` (reference 3.6).
+    message, rpc, quit_ = hexbytes(TCP_MESSAGE), hexbytes(TCP_RPC), hexbytes(TCP_QUIT)
+    fixed, numbered, first = 1, 2, 1
+    third = len(message) // 3
+    return {
+        "message-one-datagram": datagram_records(fixed | numbered, [(first, 0, message)]),
+        "message-three-datagrams": datagram_records(fixed | numbered, [
+            (first, 0, message[:third]), (0, 1, message[third:2 * third]), (0, 2, message[2 * third:])]),
+        "rpc-then-quit": datagram_records(fixed | numbered, [(first, 0, rpc), (first, 0, quit_)]),
+        # counters given by the input: the middle datagram of the message is missing
+        "message-lost-datagram": datagram_records(fixed, [
+            (0, 0, message[:third]), (0, 2, message[2 * third:]), (0, 0, rpc)]),
+        # everything given by the input, as it would be on the wire
+        "message-raw-prefix": datagram_records(0, [(0, 0, message), (0, 0, rpc)]),
+    }
 
 
 def name_service() -> dict[str, bytes]:
@@ -121,7 +157,8 @@ def main() -> None:
     targets = {"carrier_accept_fuzz": carrier_accept(), "name_service_fuzz": name_service(),
                "name_server_wire_fuzz": name_server_wire(),
                "http_request_fuzz": http_request(), "device_rpc_fuzz": device_rpc(), "joint_data_fuzz": joint_data(),
-               "image_codec_fuzz": image_codec(), "can_frame_fuzz": can_frame()}
+               "image_codec_fuzz": image_codec(), "can_frame_fuzz": can_frame(),
+               "udp_datagram_fuzz": datagram(), "mcast_datagram_fuzz": datagram()}
     for target, seeds in targets.items():
         folder = OUT / target
         if folder.exists():

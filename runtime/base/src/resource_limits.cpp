@@ -31,6 +31,8 @@ std::size_t from_env(const char* name, std::size_t fallback) {
 ResourceLimits from_environment() {
   ResourceLimits l;
   l.max_connections = from_env("ROBOGENE_MAX_CONNECTIONS", l.max_connections);
+  l.max_connections_per_address = from_env("ROBOGENE_MAX_CONNECTIONS_PER_ADDRESS", l.max_connections_per_address);
+  l.max_handshakes_per_address = from_env("ROBOGENE_MAX_HANDSHAKES_PER_ADDRESS", l.max_handshakes_per_address);
   l.max_receiving_bytes = from_env("ROBOGENE_MAX_RECEIVING_BYTES", l.max_receiving_bytes);
   l.max_message_size = from_env("ROBOGENE_MAX_MESSAGE_SIZE", l.max_message_size);
   l.max_decoded_values = from_env("ROBOGENE_MAX_DECODED_VALUES", l.max_decoded_values);
@@ -93,24 +95,103 @@ bool ResourceUsage::try_add_shmem_segment() {
 }
 void ResourceUsage::remove_shmem_segment() noexcept { shmem_.fetch_sub(1); }
 
-ConnectionSlot ConnectionSlot::try_take() {
+std::size_t ResourceUsage::connections_from(const std::string& address) const {
+  std::lock_guard<std::mutex> lock(peers_mutex_);
+  auto it = peers_.find(address);
+  return it == peers_.end() ? 0 : it->second.connections;
+}
+
+std::size_t ResourceUsage::handshakes_from(const std::string& address) const {
+  std::lock_guard<std::mutex> lock(peers_mutex_);
+  auto it = peers_.find(address);
+  return it == peers_.end() ? 0 : it->second.handshakes;
+}
+
+bool ResourceUsage::try_add_peer_connection(const std::string& address) {
+  const ResourceLimits l = resource_limits();
+  std::lock_guard<std::mutex> lock(peers_mutex_);
+  PeerCounts& c = peers_[address];
+  if (c.connections >= l.max_connections_per_address || c.handshakes >= l.max_handshakes_per_address) {
+    if (c.connections == 0) peers_.erase(address);
+    return false;
+  }
+  ++c.connections;
+  ++c.handshakes;
+  return true;
+}
+
+void ResourceUsage::end_peer_handshake(const std::string& address) noexcept {
+  std::lock_guard<std::mutex> lock(peers_mutex_);
+  auto it = peers_.find(address);
+  if (it != peers_.end() && it->second.handshakes > 0) --it->second.handshakes;
+}
+
+void ResourceUsage::remove_peer_connection(const std::string& address, bool in_handshake) noexcept {
+  std::lock_guard<std::mutex> lock(peers_mutex_);
+  auto it = peers_.find(address);
+  if (it == peers_.end()) return;
+  if (in_handshake && it->second.handshakes > 0) --it->second.handshakes;
+  if (it->second.connections > 0) --it->second.connections;
+  if (it->second.connections == 0) peers_.erase(it);
+}
+
+ConnectionSlot ConnectionSlot::try_take(const std::string& peer_address, std::string* refused_because) {
   ConnectionSlot s;
-  s.held_ = ResourceUsage::global().try_add_connection();
+  auto& usage = ResourceUsage::global();
+  if (!usage.try_add_connection()) {
+    if (refused_because) {
+      *refused_because = "the process already serves " + std::to_string(resource_limits().max_connections) +
+                         " connections (ROBOGENE_MAX_CONNECTIONS)";
+    }
+    return s;
+  }
+  if (!usage.try_add_peer_connection(peer_address)) {
+    usage.remove_connection();
+    if (refused_because) {
+      const ResourceLimits l = resource_limits();
+      const std::size_t handshakes = usage.handshakes_from(peer_address);
+      *refused_because =
+          handshakes >= l.max_handshakes_per_address
+              ? std::to_string(handshakes) + " handshakes from " + peer_address +
+                    " are already in progress (ROBOGENE_MAX_HANDSHAKES_PER_ADDRESS=" +
+                    std::to_string(l.max_handshakes_per_address) + ")"
+              : "the process already serves " + std::to_string(usage.connections_from(peer_address)) +
+                    " connections from " + peer_address + " (ROBOGENE_MAX_CONNECTIONS_PER_ADDRESS=" +
+                    std::to_string(l.max_connections_per_address) + ")";
+    }
+    return s;
+  }
+  s.held_ = true;
+  s.in_handshake_ = true;
+  s.address_ = peer_address;
   return s;
+}
+
+void ConnectionSlot::end_handshake() noexcept {
+  if (!held_ || !in_handshake_) return;
+  in_handshake_ = false;
+  ResourceUsage::global().end_peer_handshake(address_);
+}
+
+void ConnectionSlot::release() noexcept {
+  if (!held_) return;
+  ResourceUsage::global().remove_peer_connection(address_, in_handshake_);
+  ResourceUsage::global().remove_connection();
+  held_ = in_handshake_ = false;
 }
 
 ConnectionSlot& ConnectionSlot::operator=(ConnectionSlot&& o) noexcept {
   if (this != &o) {
-    if (held_) ResourceUsage::global().remove_connection();
+    release();
     held_ = o.held_;
-    o.held_ = false;
+    in_handshake_ = o.in_handshake_;
+    address_ = std::move(o.address_);
+    o.held_ = o.in_handshake_ = false;
   }
   return *this;
 }
 
-ConnectionSlot::~ConnectionSlot() {
-  if (held_) ResourceUsage::global().remove_connection();
-}
+ConnectionSlot::~ConnectionSlot() { release(); }
 
 void ReceivingBytes::add(std::size_t n) {
   constexpr std::size_t kBlock = 64 * 1024;

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "port_core.hpp"
+#include "registration_keeper.hpp"
 #include "robogene/carrier/registry.hpp"
 #include "robogene/error.hpp"
 #include "robogene/log.hpp"
@@ -54,46 +55,36 @@ void advertise(NameClient& names, const std::string& name) {
 
 void Port::Core::start_keeper() {
   if (options.registration_check.count() <= 0 || !names) return;
-  {
-    std::lock_guard<std::mutex> lock(keeper_mutex);
-    keeper_stop = false;
-  }
-  keeper = std::thread([self = shared_from_this()] { self->keep_registered(); });
+  kept = true;
+  detail::RegistrationKeeper::instance().add(this, options.registration_check,
+                                             [weak = weak_from_this()] {
+                                               if (auto self = weak.lock()) self->check_registration();
+                                             });
 }
 
-void Port::Core::keep_registered() {
-  bool warned_taken = false;
-  std::unique_lock<std::mutex> lock(keeper_mutex);
-  for (;;) {
-    keeper_cv.wait_for(lock, options.registration_check, [this] { return keeper_stop; });
-    if (keeper_stop) return;
-    lock.unlock();
-    try {
-      auto known = names->query(name);
-      if (!known) {
-        names->register_name(name, "tcp", address.host, address.port);
-        advertise(*names, name);
-        log::warn(name, "the name server had lost " + name + "; registered it again at " + address.uri());
-        warned_taken = false;
-      } else if ((known->host != address.host || known->port != address.port) && !warned_taken) {
-        log::warn(name, "the name server gives " + name + " to " + known->uri() + ", not to this port at " +
-                            address.uri() + "; leaving it to that port");
-        warned_taken = true;
-      }
-    } catch (const std::exception& e) {
-      log::debug(name, std::string("could not check the registration (will try again): ") + e.what());
+void Port::Core::check_registration() {
+  if (closing) return;
+  try {
+    auto known = names->query(name);
+    if (!known) {
+      names->register_name(name, "tcp", address.host, address.port);
+      advertise(*names, name);
+      log::warn(name, "the name server had lost " + name + "; registered it again at " + address.uri());
+      warned_taken = false;
+    } else if ((known->host != address.host || known->port != address.port) && !warned_taken) {
+      log::warn(name, "the name server gives " + name + " to " + known->uri() + ", not to this port at " +
+                          address.uri() + "; leaving it to that port");
+      warned_taken = true;
     }
-    lock.lock();
+  } catch (const std::exception& e) {
+    log::debug(name, std::string("could not check the registration (will try again): ") + e.what());
   }
 }
 
 void Port::Core::stop_keeper() {
-  {
-    std::lock_guard<std::mutex> lock(keeper_mutex);
-    keeper_stop = true;
-  }
-  keeper_cv.notify_all();
-  if (keeper.joinable() && keeper.get_id() != std::this_thread::get_id()) keeper.join();
+  if (!kept) return;
+  kept = false;
+  detail::RegistrationKeeper::instance().remove(this);
 }
 
 void Port::open(const std::string& name, NameClient names) {

@@ -107,13 +107,12 @@ struct Port::Core : std::enable_shared_from_this<Port::Core> {
 
   // Registration keeping: a port whose name the server lost (unregistered while the port was
   // too busy to answer a liveness probe, or a server restarted without its database)
-  // registers again at the same address.
-  std::thread keeper;
-  std::mutex keeper_mutex;
-  std::condition_variable keeper_cv;
-  bool keeper_stop = false;
+  // registers again at the same address. The process's one RegistrationKeeper thread runs
+  // check_registration every options.registration_check.
+  bool kept = false;
+  bool warned_taken = false;
   void start_keeper();
-  void keep_registered();
+  void check_registration();
   void stop_keeper();
 
   // Operations shared by the API, admin messages and text commands; each returns YARP's

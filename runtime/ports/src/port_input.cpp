@@ -59,11 +59,10 @@ void Port::Core::accept_loop() {
                           std::to_string(inputs.size()) + " inputs (the limit)");
       continue;  // the stream closes as it goes out of scope
     }
-    unit->slot = ConnectionSlot::try_take();
+    std::string refused_because;
+    unit->slot = ConnectionSlot::try_take(s->peer().host, &refused_because);
     if (!unit->slot.held()) {
-      log::warn(name, "refused a connection from " + s->peer_text() + ": the process already serves " +
-                          std::to_string(resource_limits().max_connections) +
-                          " connections (ROBOGENE_MAX_CONNECTIONS)");
+      log::warn(name, "refused a connection from " + s->peer_text() + ": " + refused_because);
       continue;
     }
     try {
@@ -120,6 +119,7 @@ void Port::Core::serve(std::shared_ptr<InputUnit> unit, net::TcpStream stream) {
     finished();
     return;
   }
+  unit->slot.end_handshake();
   unit->last_heard = std::chrono::steady_clock::now().time_since_epoch().count();
   {
     std::lock_guard<std::mutex> lock(mutex);

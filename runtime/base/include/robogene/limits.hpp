@@ -11,13 +11,21 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <mutex>
 #include <string>
+#include <unordered_map>
 
 namespace robogene {
 
 struct ResourceLimits {
   // Inbound connections of all ports of this process together, each served by a thread.
   std::size_t max_connections = 1024;               // ROBOGENE_MAX_CONNECTIONS
+  // Of those, the ones from one remote address, so that one host cannot take them all; and
+  // of those, the ones still in their handshake (the cheapest to hold open: nothing valid
+  // need be sent). All of a robot's own processes share one address (127.0.0.1 or the
+  // host's), hence room for hundreds; a start-up connects one port at a time per tool.
+  std::size_t max_connections_per_address = 256;    // ROBOGENE_MAX_CONNECTIONS_PER_ADDRESS
+  std::size_t max_handshakes_per_address = 64;      // ROBOGENE_MAX_HANDSHAKES_PER_ADDRESS
   // Bytes of messages received but not yet complete, all connections together. A peer that
   // sends part of a big message and stalls holds what it sent, never what it announced.
   std::size_t max_receiving_bytes = 512u << 20;     // ROBOGENE_MAX_RECEIVING_BYTES
@@ -56,26 +64,50 @@ class ResourceUsage {
   bool try_add_shmem_segment();
   void remove_shmem_segment() noexcept;
 
+  // Inbound connections from one remote address, and those of them still in their handshake.
+  std::size_t connections_from(const std::string& address) const;
+  std::size_t handshakes_from(const std::string& address) const;
+  bool try_add_peer_connection(const std::string& address);  // also counts it as a handshake
+  void end_peer_handshake(const std::string& address) noexcept;
+  void remove_peer_connection(const std::string& address, bool in_handshake) noexcept;
+
  private:
+  struct PeerCounts {
+    std::size_t connections = 0;
+    std::size_t handshakes = 0;
+  };
   std::atomic<std::size_t> connections_{0};
   std::atomic<std::size_t> receiving_{0};
   std::atomic<std::size_t> shmem_{0};
+  mutable std::mutex peers_mutex_;
+  std::unordered_map<std::string, PeerCounts> peers_;  // only addresses with a connection
 };
 
-// One inbound connection's slot in the process count (movable, released on destruction).
+// One inbound connection's slot in the process count and in its remote address's counts
+// (movable, released on destruction). It starts in the handshake.
 class ConnectionSlot {
  public:
   ConnectionSlot() = default;
-  static ConnectionSlot try_take();  // an empty slot (!held()) when the process is full
-  ConnectionSlot(ConnectionSlot&& o) noexcept : held_(o.held_) { o.held_ = false; }
+  // An empty slot (!held()) when the process, or the address `peer_address`, is full; then
+  // `refused_because` (if given) says which limit, naming its variable.
+  static ConnectionSlot try_take(const std::string& peer_address, std::string* refused_because = nullptr);
+  ConnectionSlot(ConnectionSlot&& o) noexcept
+      : held_(o.held_), in_handshake_(o.in_handshake_), address_(std::move(o.address_)) {
+    o.held_ = o.in_handshake_ = false;
+  }
   ConnectionSlot& operator=(ConnectionSlot&& o) noexcept;
   ConnectionSlot(const ConnectionSlot&) = delete;
   ConnectionSlot& operator=(const ConnectionSlot&) = delete;
   ~ConnectionSlot();
   bool held() const noexcept { return held_; }
+  // The handshake is over (accepted or not): the connection stops counting as one in flight.
+  void end_handshake() noexcept;
 
  private:
+  void release() noexcept;
   bool held_ = false;
+  bool in_handshake_ = false;
+  std::string address_;
 };
 
 // Bytes one message holds while it arrives, counted in the process total; grows as bytes

@@ -7,6 +7,7 @@
 
 #include "binary_framing.hpp"
 #include "payload_reader.hpp"
+#include "grow_read.hpp"
 #include "robogene/carrier/bottle_framer.hpp"
 #include "robogene/error.hpp"
 
@@ -91,7 +92,8 @@ BinaryOutbound::BinaryOutbound(std::unique_ptr<Link> link, std::string carrier, 
       carrier_(std::move(carrier)),
       acks_(acks),
       remote_(std::move(remote)),
-      max_reply_size_(max_reply_size) {}
+      max_reply_size_(max_reply_size),
+      reply_budget_("reply from " + remote_) {}
 
 void BinaryOutbound::set_timeout(net::Millis t) {
   link_->stream.set_read_timeout(t);
@@ -124,7 +126,8 @@ void BinaryOutbound::await_completion(Bottle* reply) {
     reply_bytes_.clear();
     DecodeLimits limits;
     limits.max_bytes = max_reply_size_;
-    read_bottle_bytes(link_->reader, reply_bytes_, limits, first8);
+    ReleaseOnExit release(reply_budget_, &reply_bytes_);
+    read_bottle_bytes(link_->reader, reply_bytes_, limits, first8, &reply_budget_);
     if (reply) *reply = Bottle::from_bytes(reply_bytes_, limits);
   }
   if (acks_) {

@@ -7,8 +7,8 @@
 namespace robogene::carrier {
 
 void read_bottle_bytes(net::StreamReader& in, std::vector<std::uint8_t>& out,
-                       const DecodeLimits& limits, const std::uint8_t* first8) {
-  detail::read_bottle_bytes_from(in, out, limits, first8);
+                       const DecodeLimits& limits, const std::uint8_t* first8, ReceivingBytes* budget) {
+  detail::read_bottle_bytes_from(in, out, limits, first8, budget);
 }
 
 }  // namespace robogene::carrier

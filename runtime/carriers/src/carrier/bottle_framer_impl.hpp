@@ -23,8 +23,8 @@ template <typename In>
 class BottleFramer {
  public:
   BottleFramer(In& in, std::vector<std::uint8_t>& out, const DecodeLimits& limits,
-               const std::uint8_t* first8)
-      : in_(in), out_(out), limits_(limits), start_(out.size()) {
+               const std::uint8_t* first8, ReceivingBytes* budget)
+      : in_(in), out_(out), limits_(limits), budget_(budget), start_(out.size()) {
     if (first8) out_.insert(out_.end(), first8, first8 + 8);
   }
 
@@ -85,7 +85,7 @@ class BottleFramer {
       fail(0, "reply larger than the " + std::to_string(limits_.max_bytes) + "-byte limit");
     }
     std::size_t need_end = start_ + cursor_ + n;
-    if (out_.size() < need_end) append_growing(in_, out_, need_end - out_.size(), nullptr);
+    if (out_.size() < need_end) append_growing(in_, out_, need_end - out_.size(), budget_);
     cursor_ += n;
   }
 
@@ -103,14 +103,15 @@ class BottleFramer {
   In& in_;
   std::vector<std::uint8_t>& out_;
   const DecodeLimits& limits_;
+  ReceivingBytes* budget_;  // counts the bytes as they arrive (may be null)
   std::size_t start_;
   std::size_t cursor_ = 0;
 };
 
 template <typename In>
 void read_bottle_bytes_from(In& in, std::vector<std::uint8_t>& out, const DecodeLimits& limits,
-                            const std::uint8_t* first8 = nullptr) {
-  BottleFramer<In> f(in, out, limits, first8);
+                            const std::uint8_t* first8 = nullptr, ReceivingBytes* budget = nullptr) {
+  BottleFramer<In> f(in, out, limits, first8, budget);
   f.bottle(0);
 }
 

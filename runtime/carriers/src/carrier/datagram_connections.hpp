@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "binary_framing.hpp"
 #include "robogene/carrier/crc32.hpp"
 #include "grow_read.hpp"
+#include "payload_reader.hpp"
 #include "robogene/carrier/connection.hpp"
 #include "robogene/carrier/encoded_payload.hpp"
 #include "robogene/carrier/yarp_number.hpp"
@@ -44,7 +46,8 @@ class DatagramInbound final : public InboundConnection {
 
   bool read(InboundMessage& m) override {
     for (;;) {
-      if (!next_datagram(net::kNoTimeout, true)) return false;
+      if (!head_waiting_ && !next_datagram(net::kNoTimeout, true)) return false;
+      head_waiting_ = false;
       if (counter_ != 0) continue;  // the tail of a message whose head was lost
       try {
         expected_ = 1;
@@ -56,7 +59,12 @@ class DatagramInbound final : public InboundConnection {
               mm.detached_blobs.clear();
               mm.detached_blob_ordinals.clear();
               mm.payload.clear();
-              append_growing(*this, mm.payload, n, nullptr);
+              // Big messages count in the process's bytes in transit, as on tcp.
+              std::optional<ReceivingBytes> budget;
+              if (n >= kDetachBlobsFrom) {
+                budget.emplace(remote_ + "'s " + carrier_ + " message of " + std::to_string(n) + " bytes");
+              }
+              append_growing(*this, mm.payload, n, budget ? &*budget : nullptr);
             },
             m, max_size_, remote_ + " (" + carrier_ + " " + peer_ + ")");
         m.reply_expected = false;  // connectionless: nobody waits for a reply
@@ -111,6 +119,8 @@ class DatagramInbound final : public InboundConnection {
           throw NetworkError(carrier_ + " message from " + remote_ + " stopped arriving mid-message");
         }
         if (counter_ != expected_) {
+          // The first datagram of the next message: this one lost its tail, that one is whole.
+          head_waiting_ = counter_ == 0;
           throw ParseError(0, carrier_ + " datagram " + std::to_string(expected_) + " of a message from " +
                                   remote_ + " was lost (got number " + std::to_string(counter_) + ")");
         }
@@ -134,6 +144,7 @@ class DatagramInbound final : public InboundConnection {
   std::size_t len_ = 0;
   std::int32_t counter_ = 0;
   std::int32_t expected_ = 0;
+  bool head_waiting_ = false;  // buf_ holds the first datagram of a message not read yet
 };
 
 // Frames one outbound message as datagrams; `emit(iov, 2)` sends each (prefix, slice).

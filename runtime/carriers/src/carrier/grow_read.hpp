@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <vector>
 
 #include "robogene/limits.hpp"
@@ -33,5 +34,26 @@ void append_growing(In& in, std::vector<std::uint8_t>& v, std::size_t n, Receivi
     done += step;
   }
 }
+
+// Gives a message's (or reply's) bytes back to the process total when it is complete or fails.
+// When it fails, `buffer` (if given), which those bytes were read into, is freed as well: else
+// a failed connection would keep the memory after its share of the total had been given back,
+// and others could take that share again.
+class ReleaseOnExit {
+ public:
+  explicit ReleaseOnExit(ReceivingBytes& budget, std::vector<std::uint8_t>* buffer = nullptr)
+      : budget_(budget), buffer_(buffer), exceptions_(std::uncaught_exceptions()) {}
+  ~ReleaseOnExit() {
+    budget_.release();
+    if (buffer_ && std::uncaught_exceptions() > exceptions_) std::vector<std::uint8_t>().swap(*buffer_);
+  }
+  ReleaseOnExit(const ReleaseOnExit&) = delete;
+  ReleaseOnExit& operator=(const ReleaseOnExit&) = delete;
+
+ private:
+  ReceivingBytes& budget_;
+  std::vector<std::uint8_t>* buffer_;
+  int exceptions_;
+};
 
 }  // namespace robogene::carrier::detail

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "http_connections.hpp"
+#include "http_origin.hpp"
 #include "http_request.hpp"
 #include "robogene/carrier/builtin_carriers.hpp"
 #include "robogene/error.hpp"
@@ -45,6 +46,8 @@ class HttpCarrier final : public Carrier {
                 "(set ROBOGENE_HTTP_WRITES=1 to enable them for allowed peers; see docs/security.md)";
     } else if (!ctx.access.allows(host)) {
       refusal = refusal_text("HTTP write", host);
+    } else if (std::string why = detail::cross_site_reason(req, detail::this_machine_names()); !why.empty()) {
+      refusal = "HTTP write refused: " + why + " (see docs/security.md)";
     }
     return std::make_unique<detail::HttpInbound>(std::move(link), std::move(plan), ctx.local_name,
                                                  ctx.handshake_timeout, refusal, ctx.harmless_data);

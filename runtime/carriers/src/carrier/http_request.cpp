@@ -108,6 +108,14 @@ HttpRequest read_http_request(const Header& header, Link& link, std::size_t max_
       }
     } else if (key == "content-type") {
       form = starts_with(lower(value), "application/x-www-form-urlencoded");
+    } else if (key == "host") {
+      r.host = value;
+    } else if (key == "origin") {
+      r.origin = value;
+    } else if (key == "referer") {
+      r.referer = value;
+    } else if (key == "sec-fetch-site") {
+      r.sec_fetch_site = lower(value);
     }
   }
   if (static_cast<unsigned long long>(content_length) > max_body) {

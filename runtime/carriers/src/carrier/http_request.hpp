@@ -20,6 +20,11 @@ struct HttpRequest {
   std::string method;  // "GET" or "POST"
   std::string target;  // after the first '/', undecoded: "data=1+2", "get/axes?format=json"
   std::vector<std::pair<std::string, std::string>> fields;  // query / form fields, decoded
+  // What a browser says about who asked (empty when the header is absent): http_origin.hpp.
+  std::string host;            // Host: "192.168.1.20:10002"
+  std::string origin;          // Origin: "http://192.168.1.20:10002", or "null"
+  std::string referer;         // Referer: the page the request came from
+  std::string sec_fetch_site;  // Sec-Fetch-Site: "same-origin", "cross-site", "none", ...
 
   const std::string* field(const std::string& key) const;
 };

@@ -110,7 +110,8 @@ std::unique_ptr<OutboundConnection> ShmemInbound::reverse() {
 
 ShmemOutbound::ShmemOutbound(std::unique_ptr<ShmChannel> ch, std::string remote, std::size_t max_reply_size,
                              net::Millis timeout)
-    : ch_(std::move(ch)), remote_(std::move(remote)), max_reply_size_(max_reply_size) {
+    : ch_(std::move(ch)), remote_(std::move(remote)), max_reply_size_(max_reply_size),
+      reply_budget_("reply from " + remote_) {
   set_timeout(timeout);
 }
 
@@ -146,7 +147,8 @@ void ShmemOutbound::await_completion(Bottle* reply) {
     reply_bytes_.clear();
     DecodeLimits limits;
     limits.max_bytes = max_reply_size_;
-    read_bottle_bytes_from(*ch_->rx, reply_bytes_, limits, first8);
+    ReleaseOnExit release(reply_budget_, &reply_bytes_);
+    read_bottle_bytes_from(*ch_->rx, reply_bytes_, limits, first8, &reply_budget_);
     if (reply) *reply = Bottle::from_bytes(reply_bytes_, limits);
   }
   ch_->rx->read_exact(first8, 8);

@@ -14,6 +14,7 @@
 
 #include "robogene/carrier/connection.hpp"
 #include "robogene/carrier/encoded_payload.hpp"
+#include "robogene/limits.hpp"
 #include "shm_segment.hpp"
 
 namespace robogene::carrier::detail {
@@ -86,6 +87,7 @@ class ShmemOutbound final : public OutboundConnection {
   std::vector<std::uint8_t> head_;
   std::vector<iovec> iov_;
   std::vector<std::uint8_t> reply_bytes_;
+  ReceivingBytes reply_budget_;  // the reply's bytes in the process's bytes-in-transit total
   bool closed_ = false;
 };
 

@@ -50,7 +50,7 @@ class TextCarrier final : public Carrier {
                          "): expected \"Welcome ...\", got \"" + welcome + "\"");
     }
     return std::make_unique<detail::TextOutbound>(std::move(link), name(), acks_,
-                                                  ctx.target_name, 1u << 20, false);
+                                                  ctx.target_name, 1u << 20, ctx.max_message_size, false);
   }
 
  private:

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "text_connections.hpp"
 
+#include "grow_read.hpp"
 #include "robogene/error.hpp"
 #include "robogene/text_completeness.hpp"
 
@@ -93,16 +94,19 @@ void TextInbound::finish() {
 
 std::unique_ptr<OutboundConnection> TextInbound::reverse() {
   return std::make_unique<TextOutbound>(std::move(link_), carrier_, acks_, remote_, max_line_,
-                                        true);
+                                        max_message_size_, true);
 }
 
 TextOutbound::TextOutbound(std::unique_ptr<Link> link, std::string carrier, bool acks,
-                           std::string remote, std::size_t max_line, bool reversed)
+                           std::string remote, std::size_t max_line, std::size_t max_reply_size,
+                           bool reversed)
     : link_(std::move(link)),
       carrier_(std::move(carrier)),
       acks_(acks),
       remote_(std::move(remote)),
       max_line_(max_line),
+      max_reply_size_(max_reply_size),
+      reply_budget_("reply from " + remote_),
       reversed_(reversed) {}
 
 void TextOutbound::set_timeout(net::Millis t) {
@@ -135,9 +139,16 @@ void TextOutbound::await_completion(Bottle* reply) {
   }
   awaiting_ = false;
   std::string reply_text;
+  ReleaseOnExit release(reply_budget_);
   for (;;) {
     std::string line = link_->reader.read_line(max_line_);
     if (line == "<ACK>") break;
+    // A reader that never sends "<ACK>" must not make the reply grow for ever.
+    if (reply_text.size() + line.size() + 1 > max_reply_size_) {
+      throw NetworkError("reply from " + remote_ + " (" + peer_text() + ") is more than the " +
+                         std::to_string(max_reply_size_) + "-byte limit of a reply, and has not ended");
+    }
+    reply_budget_.add(line.size() + 1);
     if (!reply_text.empty()) reply_text += '\n';
     reply_text += line;
   }

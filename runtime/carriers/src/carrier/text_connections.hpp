@@ -9,6 +9,7 @@
 #include <string>
 
 #include "robogene/carrier/connection.hpp"
+#include "robogene/limits.hpp"
 
 namespace robogene::carrier::detail {
 
@@ -45,9 +46,10 @@ class TextInbound final : public InboundConnection {
 class TextOutbound final : public OutboundConnection {
  public:
   // `reversed`: the peer turned this connection around with "r"; it is a person or a reader
-  // that does not send "<ACK>" lines, so none are awaited.
+  // that does not send "<ACK>" lines, so none are awaited. A reply is at most
+  // `max_reply_size` bytes of text.
   TextOutbound(std::unique_ptr<Link> link, std::string carrier, bool acks, std::string remote,
-               std::size_t max_line, bool reversed);
+               std::size_t max_line, std::size_t max_reply_size, bool reversed);
   const std::string& carrier_name() const override { return carrier_; }
   const std::string& remote_name() const override { return remote_; }
   std::string peer_text() const override { return link_->stream.peer_text(); }
@@ -66,6 +68,8 @@ class TextOutbound final : public OutboundConnection {
   bool acks_;
   std::string remote_;
   std::size_t max_line_;
+  std::size_t max_reply_size_;
+  ReceivingBytes reply_budget_;  // the reply's bytes in the process's bytes-in-transit total
   bool reversed_;
   bool closed_ = false;
   bool awaiting_ = false;

@@ -9,6 +9,7 @@
 
 #include <thread>
 
+#include "../../src/carrier/http_origin.hpp"
 #include "robogene/testing/port_test_util.hpp"
 #include "robogene/testing/connect_from.hpp"
 #include "robogene/testing/wire_helpers.hpp"
@@ -218,4 +219,53 @@ TEST(HttpCarrier, WritesAreRefusedUnlessEnabledAndNoResponseAllowsOtherOrigins) 
   EXPECT_EQ(r.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << r;
   std::lock_guard<std::mutex> lock(echo.mutex);
   EXPECT_EQ(echo.got, std::vector<std::string>{"web http: 10"});
+}
+
+// With writes on, an allowed machine's browser writes; a page of another site that it shows
+// must not make it write for that page: a cross-site form or <img> (the browser says so in
+// Sec-Fetch-Site, Origin or Referer), or a DNS-rebinding page whose own name points at the
+// robot (same-origin, but the Host it names is not one of this machine's). All were served.
+TEST(HttpCarrier, EnabledWritesAreRefusedWhenAPageOfAnotherSiteSendsThem) {
+  PortTable t;
+  Port p(http_writes_on());
+  Echo echo;
+  p.set_reader(echo.reader());
+  open_local(p, "/hx", t);
+  const std::string at = "127.0.0.1:" + std::to_string(p.contact().port);
+  auto get = [&](const std::string& value, const std::string& headers) {
+    return http(p, "GET /data=" + value + " HTTP/1.1\r\n" + headers + "\r\n");
+  };
+  const std::pair<std::string, std::string> refused[] = {
+      {"Host: " + at + "\r\nOrigin: http://evil.example\r\n", "a page of http://evil.example sent it"},
+      {"Host: " + at + "\r\nSec-Fetch-Site: cross-site\r\n", "(Sec-Fetch-Site: cross-site)"},
+      {"Host: " + at + "\r\nReferer: http://evil.example/page.html\r\n", "the page http://evil.example/page.html"},
+      {"Host: " + at + "\r\nOrigin: null\r\n", "a page of null sent it"},
+      {"Host: evil.example:" + std::to_string(p.contact().port) + "\r\nOrigin: http://evil.example:" +
+           std::to_string(p.contact().port) + "\r\nSec-Fetch-Site: same-origin\r\n",
+       "names the host \"evil.example\", which is not an address or a name of this machine"},
+  };
+  for (const auto& [headers, why] : refused) {
+    std::string r = get("1", headers);
+    EXPECT_EQ(r.rfind("HTTP/1.1 403 Forbidden\r\n", 0), 0u) << headers << " -> " << r;
+    EXPECT_NE(body_of(r).find(why), std::string::npos) << headers << " -> " << r;
+  }
+  // Reading from another site's page still works (the page, nothing written).
+  std::string page = http(p, "GET / HTTP/1.1\r\nHost: " + at + "\r\nOrigin: http://evil.example\r\n\r\n");
+  EXPECT_EQ(page.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << page;
+  // The port's own page, a typed address, localhost, this machine's name, a client without headers.
+  const std::string served[] = {
+      "Host: " + at + "\r\nOrigin: http://" + at + "\r\nReferer: http://" + at + "/\r\nSec-Fetch-Site: same-origin\r\n",
+      "Host: " + at + "\r\nSec-Fetch-Site: none\r\n",
+      "Host: localhost:" + std::to_string(p.contact().port) + "\r\n",
+      "Host: " + carrier::detail::this_machine_names().at(0) + "\r\n",
+      "",
+  };
+  int n = 0;
+  for (const std::string& headers : served) {
+    std::string r = get(std::to_string(++n), headers);
+    EXPECT_EQ(r.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << headers << " -> " << r;
+  }
+  std::lock_guard<std::mutex> lock(echo.mutex);
+  EXPECT_EQ(echo.got, (std::vector<std::string>{"web http: 1", "web http: 2", "web http: 3", "web http: 4",
+                                                "web http: 5"}));
 }

@@ -110,3 +110,33 @@ TEST(HostileLostName, APortWhoseNameWasLostRegistersAgain) {
   r.close();
   EXPECT_FALSE(ns.client().query("/lost").has_value()) << "a closed port does not come back";
 }
+
+// Each open port used to keep its own thread for these checks: a process with many ports had
+// as many more threads. Now one thread serves every port of the process.
+TEST(HostileLostName, ManyPortsShareOneRegistrationThread) {
+  log::set_level(log::Level::Error);
+  name::LocalNameServer ns;  // no liveness probe: its connections to the ports would be threads too
+  PortOptions o;
+  o.registration_check = 200ms;
+  const ProcessUsage before = ProcessUsage::now();
+  constexpr std::size_t kPorts = 20;
+  std::vector<std::unique_ptr<Port>> ports;
+  for (std::size_t i = 0; i < kPorts; ++i) {
+    ports.push_back(std::make_unique<Port>(o));
+    ports.back()->open("/many" + std::to_string(i), ns.client());
+  }
+  // An acceptor thread per port, one registration thread and the handshake-deadline timer.
+  const ProcessUsage during =
+      usage_when([&](const ProcessUsage& u) { return u.threads <= before.threads + kPorts + 1 + kDeadlineTimerThread; });
+  EXPECT_LE(during.threads, before.threads + kPorts + 1 + kDeadlineTimerThread) << "before: " << before.text() << "; during: " << during.text();
+  // The one thread still finds every lost name.
+  ns.client().unregister("/many3");
+  ns.client().unregister("/many17");
+  EXPECT_TRUE(wait_until([&] {
+    return ns.client().query("/many3").has_value() && ns.client().query("/many17").has_value();
+  })) << "the lost names were not registered again";
+  ports.clear();
+  EXPECT_FALSE(ns.client().query("/many3").has_value()) << "closed ports do not come back";
+  const ProcessUsage after = usage_when([&](const ProcessUsage& u) { return u.threads <= before.threads + 1 + kDeadlineTimerThread; });
+  EXPECT_LE(after.threads, before.threads + 1 + kDeadlineTimerThread) << after.text();
+}
