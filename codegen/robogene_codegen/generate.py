@@ -11,7 +11,7 @@ from .idl import compile_directory
 # Directories that hold nothing but generated files: a file found there that no emitter
 # produces any more is stale and is removed by `generate`.
 OWNED_DIRS = ("runtime/include/robogene/dev/generated", "runtime/src/dev/generated",
-              "runtime/python/robogene/dev/generated", "docs/interfaces",
+              "runtime/python/robogene/dev/generated", "runtime/python/src/generated", "docs/interfaces",
               "drivers/can/generated", "runtime/python/robogene/can/generated", "docs/can")
 
 

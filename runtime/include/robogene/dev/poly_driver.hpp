@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // PolyDriver: owns one device created by the factory and hands out its interfaces (paper
-// section 3.2). view() is a dynamic_cast of the device to the requested interface, so it yields
-// nullptr when the device does not implement it.
+// section 3.2). view() is interface_of() the requested interface (a dynamic_cast, or what a
+// device written in Python answers), so it yields nullptr when the device does not implement it.
 //
 //   PolyDriver device;
 //   device.open("test_motor");
@@ -43,7 +43,7 @@ class PolyDriver {
 
   template <class Interface>
   bool view(Interface*& out) const {
-    out = device_ ? dynamic_cast<Interface*>(device_.get()) : nullptr;
+    out = device_ ? interface_of<Interface>(*device_) : nullptr;
     return out != nullptr;
   }
 
