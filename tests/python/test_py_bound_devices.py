@@ -56,6 +56,20 @@ def test_a_cpp_fake_grabber_gives_frames_to_python():
         assert camera.view(IEncoders) is None
 
 
+def test_a_view_used_after_close_or_reopen_reaches_a_closed_device_not_freed_memory():
+    motor = PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2, "clock": "manual"}))
+    ipos, ienc = motor.view(IPositionControl), motor.view(IEncoders)
+    assert ipos.positionMove(0, 1.0)
+    assert motor.close() and not motor.is_valid()
+    # The closed test_motor, kept in memory while its views live, refuses as a closed one does.
+    assert ienc.getAxes() is None and ipos.positionMove(0, 2.0) is False
+    assert motor.open(Property.from_dict({"device": "test_motor", "axes": 3}))
+    assert ienc.getAxes() is None and motor.view(IEncoders).getAxes() == 3
+    del motor
+    gc.collect()
+    assert ipos.getTargetPosition(0) is None  # the view keeps its PolyDriver, and so the device
+
+
 def test_an_unknown_device_and_a_bad_key_are_named():
     device = PolyDriver()
     assert not device.open("no_such_motor")

@@ -1466,7 +1466,7 @@ class PolyDriver:
         ...
     def close(self) -> bool:
         """
-        Closes the device; its views must not be used afterwards.
+        Closes the device. Its views answer as a closed device does (a C++ device they still refer to is kept until this PolyDriver goes).
         """
     def is_valid(self) -> bool:
         ...

@@ -441,9 +441,37 @@ void bind_driver_and_factory(py::module_& m) {
       "The server device that fits `device` (controlBoard_nws_yarp, frameGrabber_nws_yarp) or \"\".");
 }
 
+// The views a PolyDriver handed out of a C++ device, as weak references (dynamic attribute).
+py::list views_of(const py::object& poly) {
+  if (!py::hasattr(poly, "_views")) poly.attr("_views") = py::list();
+  return poly.attr("_views");
+}
+
+// Closes the device. One a view still refers to is kept (closed) until the PolyDriver goes, so a
+// view used after close() reaches a closed device, never freed memory.
+bool close_keeping_viewed(const py::object& self) {
+  std::unique_ptr<DeviceDriver, ReleaseGilDelete> device(self.cast<PolyDriver&>().release().release());
+  if (!device) return true;
+  bool ok = false;
+  {
+    py::gil_scoped_release nogil;
+    ok = device->close();
+  }
+  bool viewed = false;
+  for (const py::handle ref : views_of(self)) viewed = viewed || !ref().is_none();
+  self.attr("_views") = py::list();
+  if (viewed) {
+    if (!py::hasattr(self, "_closed_devices")) self.attr("_closed_devices") = py::list();
+    self.attr("_closed_devices").cast<py::list>().append(
+        py::capsule(device.release(), [](void* closed) { ReleaseGilDelete{}(static_cast<DeviceDriver*>(closed)); }));
+  }
+  return ok;
+}
+
 void bind_poly_driver(py::module_& m) {
   py::class_<PolyDriver, std::shared_ptr<PolyDriver>>(
-      m, "PolyDriver", "Opens one device through the factory and hands out its interfaces with view().")
+      m, "PolyDriver", "Opens one device through the factory and hands out its interfaces with view().",
+      py::dynamic_attr())
       .def(py::init([](std::optional<std::variant<std::string, const Searchable*>> config) {
              std::shared_ptr<PolyDriver> p = make_closed_at_exit<PolyDriver>();
              if (config) {
@@ -459,7 +487,9 @@ void bind_poly_driver(py::module_& m) {
            py::arg("config") = py::none())
       .def(
           "open",
-          [](PolyDriver& p, const std::variant<std::string, const Searchable*>& config) {
+          [](const py::object& self, const std::variant<std::string, const Searchable*>& config) {
+            close_keeping_viewed(self);  // the device open() would close, kept if still viewed
+            PolyDriver& p = self.cast<PolyDriver&>();
             py::gil_scoped_release nogil;
             if (const auto* name = std::get_if<std::string>(&config)) return p.open(*name);
             return p.open(*std::get<const Searchable*>(config));
@@ -467,8 +497,9 @@ void bind_poly_driver(py::module_& m) {
           py::arg("config"),
           "Opens the driver named `config`, or named by the `device` key of a Property; False (see "
           "last_error) when it cannot.")
-      .def("close", &PolyDriver::close, py::call_guard<py::gil_scoped_release>(),
-           "Closes the device; its views must not be used afterwards.")
+      .def("close", &close_keeping_viewed,
+           "Closes the device. Its views answer as a closed device does (a C++ device they still refer to "
+           "is kept until this PolyDriver goes).")
       .def("is_valid", &PolyDriver::is_valid)
       .def_property_readonly("last_error", &PolyDriver::last_error, "Why the last open() failed (\"\" after a success).")
       .def(
@@ -495,17 +526,17 @@ void bind_poly_driver(py::module_& m) {
             } else {
               view = view_interface(*device, interface);
             }
-            if (!view.is_none()) py::detail::keep_alive_impl(view, self);  // the C++ device lives in self
+            if (!view.is_none()) {
+              py::detail::keep_alive_impl(view, self);  // the C++ device lives in self
+              views_of(self).append(py::module_::import("weakref").attr("ref")(view));
+            }
             return view;
           },
           py::arg("interface"),
           "The device as `interface` (IEncoders, IPositionControl, DeviceDriver...) or None when it does not "
           "implement it. Valid until close().")
       .def("__enter__", [](py::object self) { return self; })
-      .def("__exit__", [](PolyDriver& p, py::args) {
-        py::gil_scoped_release nogil;
-        p.close();
-      });
+      .def("__exit__", [](const py::object& self, py::args) { close_keeping_viewed(self); });
 }
 
 }  // namespace

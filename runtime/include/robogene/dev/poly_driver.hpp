@@ -35,6 +35,10 @@ class PolyDriver {
   bool open(const std::string& device, const Searchable& config) { return open_with(device, config); }
   // Closes the device (if open) and forgets it; views obtained earlier become dangling.
   bool close();
+  // Forgets the open device without closing it and hands it over (nullptr when none): for a
+  // caller that must keep the device's memory alive past close(), as the Python binding does
+  // while views of it are still referenced.
+  std::unique_ptr<DeviceDriver> release() { return std::move(device_); }
   bool is_valid() const { return device_ != nullptr; }
   // The open device (nullptr when none), for code that serves it whole (network wrappers).
   DeviceDriver* device() const { return device_.get(); }
