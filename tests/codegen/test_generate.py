@@ -12,6 +12,8 @@ import textwrap
 import time
 from pathlib import Path
 
+import pytest
+
 from robogene_codegen.__main__ import main
 from robogene_codegen.emitters.common import DO_NOT_EDIT
 from robogene_codegen.generate import render
@@ -195,6 +197,29 @@ def test_a_method_added_to_the_idl_reaches_cpp_and_python(tmp_path, capsys):
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
     assert subprocess.run([str(exe)]).returncode == 0
+
+
+@pytest.mark.timeout(300)
+def test_a_method_added_to_the_idl_reaches_the_python_binding(tmp_path):
+    """The pybind emitter binds the new method and gives it a trampoline, and the regenerated
+    binding compiles against the regenerated header (syntax and templates, without linking)."""
+    import pybind11
+    import sysconfig
+
+    root = make_copy(tmp_path)
+    idl = root / "interfaces/idl/iencoders.yaml"
+    idl.write_text(idl.read_text() + textwrap.indent(NEW_METHOD, "  "))
+    assert main(["generate", "--root", str(root)]) == 0
+    binding = root / "runtime/python/src/generated/bind_interfaces.cpp"
+    text = binding.read_text()
+    assert "bool getEncoderTemperature(int j, double& temp) override {" in text
+    assert '"IEncoders", "getEncoderTemperature")(j);' in text
+    assert '"getEncoderTemperature",\n          [](IEncoders& self, int j) -> std::optional<double> {' in text
+    cc = subprocess.run(["g++", "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra", "-Werror",
+                         "-I", str(root / "runtime/include"), "-I", str(ROOT / "runtime/python/src"),
+                         "-isystem", pybind11.get_include(), "-isystem", sysconfig.get_paths()["include"],
+                         str(binding)], capture_output=True, text=True)
+    assert cc.returncode == 0, cc.stderr
 
 
 def test_generated_cpp_headers_compile_cleanly(tmp_path):

@@ -10,12 +10,14 @@ import collections.abc
 import enum
 import typing
 import typing_extensions
-__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'Contact', 'Error', 'JointData', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Port', 'RpcClient', 'RpcServer', 'Stamp', 'Value', 'decode_joint_data', 'vocab', 'vocab_to_string']
+__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'CameraFeature', 'ConfigError', 'Contact', 'ControlMode', 'ControlboardNws', 'DeviceDriver', 'DriverFactory', 'Error', 'FeatureMode', 'GrabberNws', 'IControlMode', 'IEncoders', 'IFrameGrabberControls', 'IFrameGrabberImage', 'INetworkWrapper', 'IPidControl', 'IPositionControl', 'ISimulationClock', 'ITorqueControl', 'IVelocityControl', 'ImageRgb', 'JointData', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Pid', 'PidType', 'PolyDriver', 'Port', 'Property', 'RpcClient', 'RpcServer', 'Searchable', 'Stamp', 'Value', 'decode_joint_data', 'vocab', 'vocab_to_string', 'wrapper_for']
 class Error(RuntimeError):
     pass
 class ParseError(Error):
     pass
 class NetworkError(Error):
+    pass
+class ConfigError(Error):
     pass
 class Value:
     """
@@ -728,6 +730,803 @@ class JointData:
         """
         Joint speeds, deg/s.
         """
+class Searchable:
+    """
+    Read access to a device configuration. Typed reads raise ConfigError naming where a bad value came from.
+    """
+    def __contains__(self, arg0: str) -> bool:
+        ...
+    def check(self, key: str) -> bool:
+        ...
+    def find(self, key: str) -> typing.Any:
+        """
+        The value of `key` (a list when it has several), None when absent.
+        """
+    def find_group(self, name: str) -> Searchable:
+        """
+        A nested [group], or None.
+        """
+    def get_bool(self, key: str, fallback: bool = False) -> bool:
+        ...
+    def get_float(self, key: str, fallback: typing.SupportsFloat | typing.SupportsIndex = 0.0, low: typing.SupportsFloat | typing.SupportsIndex | None = None, high: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        The float value of `key` (fallback when absent); ConfigError unless it is a number in [low, high].
+        """
+    def get_int(self, key: str, fallback: typing.SupportsInt | typing.SupportsIndex = 0, low: typing.SupportsInt | typing.SupportsIndex = -2147483648, high: typing.SupportsInt | typing.SupportsIndex = 2147483647) -> int:
+        ...
+    def get_string(self, key: str, fallback: str = '') -> str:
+        ...
+    def origin(self, key: str) -> str:
+        """
+        Where `key` was set ("motor.ini:12"), or "".
+        """
+    def require(self, key: str) -> typing.Any:
+        """
+        The value of `key`; ConfigError when absent.
+        """
+    def source(self) -> str:
+        """
+        Where the whole configuration came from.
+        """
+class Property(Searchable):
+    """
+    A device configuration from .ini text, a command line or a bottle; every entry remembers where it came from.
+    """
+    @staticmethod
+    def from_bottle(bottle: Bottle, source_name: str = 'bottle') -> Property:
+        ...
+    @staticmethod
+    def from_command_line(args: collections.abc.Sequence[str]) -> Property:
+        """
+        `--key v1 v2 --flag --group::key v` (the first item is not skipped).
+        """
+    @staticmethod
+    def from_dict(data: dict, source_name: str = 'dict') -> Property:
+        """
+        From a dict: values as put() takes them, nested dicts as groups; origins name the keys.
+        """
+    @staticmethod
+    def from_ini(text: str, source_name: str) -> Property:
+        ...
+    @staticmethod
+    def from_ini_file(path: str) -> Property:
+        ...
+    def __init__(self, source: str = 'configuration') -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def add_group(self, name: str, origin: str = 'set by program') -> Property:
+        ...
+    def keys(self) -> list[str]:
+        ...
+    def merge(self, other: Property) -> None:
+        """
+        Copies every entry and group of `other` over this one.
+        """
+    def put(self, key: str, value: typing.Any, origin: str = 'set by program') -> None:
+        ...
+    def put_values(self, key: str, values: typing.Any, origin: str) -> None:
+        ...
+    def to_bottle(self) -> Bottle:
+        ...
+class ImageRgb:
+    """
+    An RGB image: width x height pixels of 3 bytes, top row first.
+    """
+    def __init__(self, width: typing.SupportsInt | typing.SupportsIndex = 0, height: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+        ...
+    def pixel(self, x: typing.SupportsInt | typing.SupportsIndex, y: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int, int]:
+        ...
+    def resize(self, width: typing.SupportsInt | typing.SupportsIndex, height: typing.SupportsInt | typing.SupportsIndex) -> None:
+        """
+        Resizes to black pixels.
+        """
+    @property
+    def height(self) -> int:
+        ...
+    @property
+    def pixels(self) -> bytes:
+        """
+        The pixels, row by row, 3 bytes (R, G, B) each.
+        """
+    @pixels.setter
+    def pixels(self, arg1: typing.Any) -> None:
+        ...
+    @property
+    def width(self) -> int:
+        ...
+class CameraFeature(enum.IntEnum):
+    """
+    A setting of a camera that IFrameGrabberControls can read or change.
+    """
+    BRIGHTNESS: typing.ClassVar[CameraFeature]
+    EXPOSURE: typing.ClassVar[CameraFeature]
+    FOCUS: typing.ClassVar[CameraFeature]
+    FRAME_RATE: typing.ClassVar[CameraFeature]
+    GAIN: typing.ClassVar[CameraFeature]
+    GAMMA: typing.ClassVar[CameraFeature]
+    HUE: typing.ClassVar[CameraFeature]
+    IRIS: typing.ClassVar[CameraFeature]
+    SATURATION: typing.ClassVar[CameraFeature]
+    SHARPNESS: typing.ClassVar[CameraFeature]
+    SHUTTER: typing.ClassVar[CameraFeature]
+    WHITE_BALANCE: typing.ClassVar[CameraFeature]
+    @classmethod
+    def __new__(cls, value):
+        ...
+    def __format__(self, format_spec):
+        ...
+class ControlMode(enum.IntEnum):
+    """
+    How a joint is being controlled (YARP 3 VOCAB_CM_*).
+    """
+    CURRENT: typing.ClassVar[ControlMode]
+    IDLE: typing.ClassVar[ControlMode]
+    POSITION: typing.ClassVar[ControlMode]
+    POSITION_DIRECT: typing.ClassVar[ControlMode]
+    PWM: typing.ClassVar[ControlMode]
+    TORQUE: typing.ClassVar[ControlMode]
+    UNKNOWN: typing.ClassVar[ControlMode]
+    VELOCITY: typing.ClassVar[ControlMode]
+    @classmethod
+    def __new__(cls, value):
+        ...
+    def __format__(self, format_spec):
+        ...
+class FeatureMode(enum.IntEnum):
+    """
+    Whether the camera or the user sets a feature.
+    """
+    AUTOMATIC: typing.ClassVar[FeatureMode]
+    MANUAL: typing.ClassVar[FeatureMode]
+    UNKNOWN: typing.ClassVar[FeatureMode]
+    @classmethod
+    def __new__(cls, value):
+        ...
+    def __format__(self, format_spec):
+        ...
+class PidType(enum.IntEnum):
+    """
+    Which of a joint's controllers a PID command addresses (YARP 3 PidControlTypeEnum).
+    """
+    CURRENT: typing.ClassVar[PidType]
+    POSITION: typing.ClassVar[PidType]
+    TORQUE: typing.ClassVar[PidType]
+    VELOCITY: typing.ClassVar[PidType]
+    @classmethod
+    def __new__(cls, value):
+        ...
+    def __format__(self, format_spec):
+        ...
+class Pid:
+    """
+    The gains and limits of one PID controller, in the order YARP 3 puts them on the wire.
+    """
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: Pid) -> bool:
+        ...
+    def __init__(self, kp: typing.SupportsFloat | typing.SupportsIndex = 0.0, kd: typing.SupportsFloat | typing.SupportsIndex = 0.0, ki: typing.SupportsFloat | typing.SupportsIndex = 0.0, max_int: typing.SupportsFloat | typing.SupportsIndex = 0.0, max_output: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset: typing.SupportsFloat | typing.SupportsIndex = 0.0, scale: typing.SupportsFloat | typing.SupportsIndex = 0.0, stiction_up_val: typing.SupportsFloat | typing.SupportsIndex = 0.0, stiction_down_val: typing.SupportsFloat | typing.SupportsIndex = 0.0, kff: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def kd(self) -> float:
+        """
+        Derivative gain.
+        """
+    @kd.setter
+    def kd(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def kff(self) -> float:
+        """
+        Feed-forward gain.
+        """
+    @kff.setter
+    def kff(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def ki(self) -> float:
+        """
+        Integral gain.
+        """
+    @ki.setter
+    def ki(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def kp(self) -> float:
+        """
+        Proportional gain.
+        """
+    @kp.setter
+    def kp(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_int(self) -> float:
+        """
+        Saturation of the integral term.
+        """
+    @max_int.setter
+    def max_int(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_output(self) -> float:
+        """
+        Saturation of the output.
+        """
+    @max_output.setter
+    def max_output(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def offset(self) -> float:
+        """
+        Added to the output.
+        """
+    @offset.setter
+    def offset(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def scale(self) -> float:
+        """
+        Shift (power of two) applied to the output.
+        """
+    @scale.setter
+    def scale(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def stiction_down_val(self) -> float:
+        """
+        Stiction compensation, negative direction.
+        """
+    @stiction_down_val.setter
+    def stiction_down_val(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def stiction_up_val(self) -> float:
+        """
+        Stiction compensation, positive direction.
+        """
+    @stiction_up_val.setter
+    def stiction_up_val(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class DeviceDriver:
+    """
+    What every device implements: open(config) and close(). A Python subclass that also derives from generated interfaces (IEncoders...) is a device C++ can open, view and serve.
+    """
+    def __init__(self) -> None:
+        ...
+    def close(self) -> bool:
+        """
+        Releases what open() took.
+        """
+    def open(self, config: Searchable) -> bool:
+        """
+        Starts the device; False (or ConfigError naming the bad key) when it cannot.
+        """
+class INetworkWrapper:
+    """
+    A server device: it lists the ports it opened.
+    """
+    def port_names(self) -> list[str]:
+        ...
+class ISimulationClock:
+    """
+    The time of a simulated device: with `clock manual` it only moves on advance().
+    """
+    def advance(self, seconds: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Moves a manual clock on; False with a wall clock or a negative step.
+        """
+    def now(self) -> float:
+        """
+        Seconds since the device opened.
+        """
+class DriverFactory:
+    """
+    The devices by name, C++ and Python alike (DriverFactory.instance()).
+    """
+    @staticmethod
+    def instance() -> DriverFactory:
+        ...
+    def add(self, name: str, description: str, create: collections.abc.Callable[[], DeviceDriver]) -> None:
+        """
+        Adds a Python device: `create()` returns a new DeviceDriver (usually the class itself).
+        """
+    def create(self, name: str) -> typing.Any:
+        """
+        A new, unopened device of the driver `name`.
+        """
+    def descriptions(self) -> list[tuple[str, str]]:
+        ...
+    def has(self, name: str) -> bool:
+        ...
+    def names(self) -> list[str]:
+        ...
+class IControlMode:
+    """
+    Switch each axis between control modes (idle, position, velocity, torque...).
+    """
+    FINGERPRINT: typing.ClassVar[str] = '39fbc5c9de86fd49'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IControlMode'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getControlMode(self, j: typing.SupportsInt | typing.SupportsIndex) -> ControlMode | None:
+        """
+        The control mode of one axis.
+        """
+    def getControlModes(self) -> list[ControlMode] | None:
+        """
+        The control mode of every axis.
+        """
+    def setControlMode(self, j: typing.SupportsInt | typing.SupportsIndex, mode: ControlMode) -> bool:
+        """
+        Switch one axis to a control mode.
+        """
+    def setControlModes(self, modes: collections.abc.Sequence[ControlMode]) -> bool:
+        """
+        Switch every axis to a control mode.
+        """
+class IEncoders:
+    """
+    Read what each axis's encoder measures (position, speed, acceleration) and reset it.
+    """
+    FINGERPRINT: typing.ClassVar[str] = 'ac82e96ba9e4ba10'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IEncoders'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getAxes(self) -> int | None:
+        """
+        The number of axes the board controls.
+        """
+    def getEncoder(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The measured position of one axis.
+        """
+    def getEncoderAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The measured acceleration of one axis.
+        """
+    def getEncoderAccelerations(self) -> list[float] | None:
+        """
+        The measured accelerations of all axes.
+        """
+    def getEncoderSpeed(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The measured speed of one axis.
+        """
+    def getEncoderSpeeds(self) -> list[float] | None:
+        """
+        The measured speeds of all axes.
+        """
+    def getEncoders(self) -> list[float] | None:
+        """
+        The measured positions of all axes.
+        """
+    def resetEncoder(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Make the current position of one axis read as zero.
+        """
+    def resetEncoders(self) -> bool:
+        """
+        Make the current positions of all axes read as zero.
+        """
+    def setEncoder(self, j: typing.SupportsInt | typing.SupportsIndex, val: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Make the current position of one axis read as the given value.
+        """
+    def setEncoders(self, vals: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        Make the current positions of all axes read as the given values.
+        """
+class IFrameGrabberControls:
+    """
+    Control how a camera acquires images: brightness, shutter, gain and the other features of CameraFeature, each with a value normalised to [0, 1].
+    """
+    FINGERPRINT: typing.ClassVar[str] = 'cbffc663524d6e67'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IFrameGrabberControls'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getActive(self, feature: CameraFeature) -> bool | None:
+        """
+        Whether a feature is on.
+        """
+    def getFeature(self, feature: CameraFeature) -> float | None:
+        """
+        The value of a feature, as a fraction of its range.
+        """
+    def getMode(self, feature: CameraFeature) -> FeatureMode | None:
+        """
+        Who sets a feature.
+        """
+    def hasFeature(self, feature: CameraFeature) -> bool | None:
+        """
+        Whether the camera has a feature at all.
+        """
+    def setActive(self, feature: CameraFeature, onoff: bool = True) -> bool:
+        """
+        Switch a feature on or off.
+        """
+    def setFeature(self, feature: CameraFeature, value: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Set a feature, as a fraction of its range.
+        """
+    def setMode(self, feature: CameraFeature, mode: FeatureMode = ...) -> bool:
+        """
+        Let the camera set a feature (auto) or leave it to the user (manual).
+        """
+class IFrameGrabberImage:
+    """
+    A source of RGB images of a fixed size (YARP's IFrameGrabberImage / IFrameGrabberRgb).
+    """
+    FINGERPRINT: typing.ClassVar[str] = '9520a3686b751505'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IFrameGrabberImage'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getImage(self) -> ImageRgb | None:
+        """
+        The most recent frame. Local only; remote readers receive frames on the stream port.
+        """
+    def height(self) -> int | None:
+        """
+        Rows of the images.
+        """
+    def width(self) -> int | None:
+        """
+        Columns of the images.
+        """
+class IPidControl:
+    """
+    Read and tune the PID controllers of each axis, whichever control loop they close.
+    """
+    FINGERPRINT: typing.ClassVar[str] = '4f50ff3c849e6ef4'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IPidControl'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def disablePid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Switch one controller off, so that it no longer drives its axis.
+        """
+    def enablePid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Switch one controller on.
+        """
+    def getPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> Pid | None:
+        """
+        The gains of one controller of one axis.
+        """
+    def getPidError(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The current error of one controller.
+        """
+    def getPidErrorLimit(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The largest error one controller tolerates.
+        """
+    def getPidErrorLimits(self, pidtype: PidType) -> list[float] | None:
+        """
+        The largest errors one controller of each axis tolerates.
+        """
+    def getPidErrors(self, pidtype: PidType) -> list[float] | None:
+        """
+        The current errors of one controller of every axis.
+        """
+    def getPidOutput(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The current output of one controller (for example a PWM value).
+        """
+    def getPidOutputs(self, pidtype: PidType) -> list[float] | None:
+        """
+        The current outputs of one controller of every axis.
+        """
+    def getPidReference(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The reference one controller is following.
+        """
+    def getPidReferences(self, pidtype: PidType) -> list[float] | None:
+        """
+        The references one controller of every axis is following.
+        """
+    def getPids(self, pidtype: PidType) -> list[Pid] | None:
+        """
+        The gains of one controller of every axis.
+        """
+    def isPidEnabled(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool | None:
+        """
+        Whether one controller is switched on.
+        """
+    def resetPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Reset one controller, usually making what it measures its reference and clearing its integral.
+        """
+    def setPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, pid: Pid) -> bool:
+        """
+        Replace the gains of one controller of one axis.
+        """
+    def setPidErrorLimit(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, limit: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        The largest error one controller tolerates.
+        """
+    def setPidErrorLimits(self, pidtype: PidType, limits: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        The largest errors one controller of each axis tolerates.
+        """
+    def setPidOffset(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, v: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Set the value added to one controller's output (the offset of its gains).
+        """
+    def setPidReference(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Drive one controller directly with a reference; this bypasses trajectory generation.
+        """
+    def setPidReferences(self, pidtype: PidType, refs: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        Drive one controller of every axis directly with a reference.
+        """
+    def setPids(self, pidtype: PidType, pids: collections.abc.Sequence[Pid]) -> bool:
+        """
+        Replace the gains of one controller of every axis.
+        """
+class IPositionControl:
+    """
+    Move axes to target positions along trajectories shaped by a reference speed and a reference acceleration ("position control").
+    """
+    FINGERPRINT: typing.ClassVar[str] = '672a8a3f1511859a'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IPositionControl'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def checkMotionDone(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool | None:
+        """
+        Whether one axis has reached its target.
+        """
+    def checkMotionDoneAll(self) -> list[bool] | None:
+        """
+        Whether each axis has reached its target.
+        """
+    def getAxes(self) -> int | None:
+        """
+        The number of axes the board controls.
+        """
+    def getRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The reference acceleration of one axis.
+        """
+    def getRefAccelerations(self) -> list[float] | None:
+        """
+        The reference acceleration of each axis.
+        """
+    def getRefSpeed(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The reference speed of one axis.
+        """
+    def getRefSpeeds(self) -> list[float] | None:
+        """
+        The reference speed of each axis.
+        """
+    def getTargetPosition(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The position the last position move of one axis is heading for.
+        """
+    def getTargetPositions(self) -> list[float] | None:
+        """
+        The positions the last position moves are heading for.
+        """
+    def positionMove(self, j: typing.SupportsInt | typing.SupportsIndex, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Start moving one axis to an absolute position.
+        """
+    def positionMoveAll(self, refs: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        Start moving every axis to an absolute position.
+        """
+    def relativeMove(self, j: typing.SupportsInt | typing.SupportsIndex, delta: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Start moving one axis by an offset from its current target.
+        """
+    def relativeMoveAll(self, deltas: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        Start moving every axis by an offset from its current target.
+        """
+    def setRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        The acceleration with which later moves of one axis speed up and slow down.
+        """
+    def setRefAccelerations(self, accs: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        The accelerations with which later moves of each axis speed up and slow down.
+        """
+    def setRefSpeed(self, j: typing.SupportsInt | typing.SupportsIndex, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        The speed at which later position moves of one axis travel.
+        """
+    def setRefSpeeds(self, sps: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        The speeds at which later position moves of each axis travel.
+        """
+    def stop(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Decelerate one axis to rest at its reference acceleration.
+        """
+    def stopAll(self) -> bool:
+        """
+        Decelerate every axis to rest at its reference acceleration.
+        """
+class ITorqueControl:
+    """
+    Command the torque each axis exerts and read the torque it measures ("torque control").
+    """
+    FINGERPRINT: typing.ClassVar[str] = '1f1796b385fdf757'
+    INTERFACE_NAME: typing.ClassVar[str] = 'ITorqueControl'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getAxes(self) -> int | None:
+        """
+        The number of axes the board controls.
+        """
+    def getRefTorque(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The torque reference of one axis (not the measurement).
+        """
+    def getRefTorques(self) -> list[float] | None:
+        """
+        The torque references of all axes.
+        """
+    def getTorque(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The measured torque of one axis.
+        """
+    def getTorqueRange(self, j: typing.SupportsInt | typing.SupportsIndex) -> tuple[float, float] | None:
+        """
+        The smallest and largest torque one axis can exert.
+        """
+    def getTorqueRanges(self) -> tuple[list[float], list[float]] | None:
+        """
+        The smallest and largest torques each axis can exert.
+        """
+    def getTorques(self) -> list[float] | None:
+        """
+        The measured torques of all axes.
+        """
+    def setRefTorque(self, j: typing.SupportsInt | typing.SupportsIndex, t: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        The torque one axis should exert.
+        """
+    def setRefTorques(self, ts: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        The torques all axes should exert.
+        """
+class IVelocityControl:
+    """
+    Servo axes at target velocities, reached with the reference acceleration ("velocity control"). YARP 3 clients send single-axis velocity moves on the streaming command port rather than by RPC; both paths reach the same method.
+    """
+    FINGERPRINT: typing.ClassVar[str] = '7c5f58607eeb4d85'
+    INTERFACE_NAME: typing.ClassVar[str] = 'IVelocityControl'
+    VERSION: typing.ClassVar[int] = 1
+    def __init__(self) -> None:
+        ...
+    def getAxes(self) -> int | None:
+        """
+        The number of axes the board controls.
+        """
+    def getRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The reference acceleration of one axis.
+        """
+    def getRefAccelerations(self) -> list[float] | None:
+        """
+        The reference acceleration of each axis.
+        """
+    def getRefVelocities(self) -> list[float] | None:
+        """
+        The velocities the last velocity moves asked for.
+        """
+    def getRefVelocity(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+        """
+        The velocity the last velocity move of one axis asked for.
+        """
+    def setRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        The acceleration with which later moves of one axis speed up and slow down.
+        """
+    def setRefAccelerations(self, accs: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        The accelerations with which later moves of each axis speed up and slow down.
+        """
+    def stop(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+        """
+        Decelerate one axis to rest at its reference acceleration.
+        """
+    def stopAll(self) -> bool:
+        """
+        Decelerate every axis to rest at its reference acceleration.
+        """
+    def velocityMove(self, j: typing.SupportsInt | typing.SupportsIndex, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+        """
+        Start moving one axis at a velocity.
+        """
+    def velocityMoveAll(self, sps: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> bool:
+        """
+        Start moving every axis at a velocity.
+        """
+class PolyDriver:
+    """
+    Opens one device through the factory and hands out its interfaces with view().
+    """
+    def __enter__(self) -> typing.Any:
+        ...
+    def __exit__(self, *args) -> None:
+        ...
+    def __init__(self, config: str | Searchable | None = None) -> None:
+        ...
+    def close(self) -> bool:
+        """
+        Closes the device. Its views answer as a closed device does (a C++ device they still refer to is kept until this PolyDriver goes).
+        """
+    def is_valid(self) -> bool:
+        ...
+    def open(self, config: str | Searchable) -> bool:
+        """
+        Opens the driver named `config`, or named by the `device` key of a Property; False (see last_error) when it cannot.
+        """
+    def view(self, interface: type) -> typing.Any:
+        """
+        The device as `interface` (IEncoders, IPositionControl, DeviceDriver...) or None when it does not implement it. Valid until close().
+        """
+    @property
+    def last_error(self) -> str:
+        """
+        Why the last open() failed ("" after a success).
+        """
+class ControlboardNws:
+    """
+    The control board's network server: <name>/rpc:i, command:i, state:o, stateExt:o (YARP 3's).
+    """
+    def __enter__(self) -> typing.Any:
+        ...
+    def __exit__(self, *args) -> None:
+        ...
+    def __init__(self) -> None:
+        ...
+    def close(self) -> None:
+        """
+        Stops streaming and closes every port. Idempotent.
+        """
+    def open(self, device: DeviceDriver, config: Searchable) -> None:
+        """
+        Serves `device` as `config` says (name, period, server); the server keeps the device alive.
+        """
+    def port_names(self) -> list[str]:
+        """
+        The ports this server opened.
+        """
+class GrabberNws:
+    """
+    The camera's network server: <name>/rpc and <name> (the images).
+    """
+    def __enter__(self) -> typing.Any:
+        ...
+    def __exit__(self, *args) -> None:
+        ...
+    def __init__(self) -> None:
+        ...
+    def close(self) -> None:
+        """
+        Stops streaming and closes every port. Idempotent.
+        """
+    def open(self, device: DeviceDriver, config: Searchable) -> None:
+        """
+        Serves `device` as `config` says (name, period, server); the server keeps the device alive.
+        """
+    def port_names(self) -> list[str]:
+        """
+        The ports this server opened.
+        """
 def _close_all_at_exit() -> None:
     ...
 def decode_joint_data(message: Bottle) -> JointData:
@@ -740,4 +1539,8 @@ def vocab(chars: str) -> int:
     """
 def vocab_to_string(code: typing.SupportsInt | typing.SupportsIndex) -> str:
     ...
+def wrapper_for(device: DeviceDriver) -> str:
+    """
+    The server device that fits `device` (controlBoard_nws_yarp, frameGrabber_nws_yarp) or "".
+    """
 __version__: str = '0.1.0'

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "py_support.hpp"
+#include "robogene/dev/property.hpp"
 #include "robogene/error.hpp"
 
 namespace py = pybind11;
@@ -18,6 +19,8 @@ PYBIND11_MODULE(_core, m) {
   static py::exception<robogene::Error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<robogene::ParseError> parse_error(m, "ParseError", error.ptr());
   static py::exception<robogene::NetworkError> network_error(m, "NetworkError", error.ptr());
+  // A device configuration value that is missing, malformed or out of range (names where).
+  static py::exception<robogene::dev::ConfigError> config_error(m, "ConfigError", error.ptr());
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -28,6 +31,8 @@ PYBIND11_MODULE(_core, m) {
           py::reinterpret_borrow<py::object>(parse_error.ptr())(robogene::python::text_to_python(e.what()));
       instance.attr("position") = e.position();
       PyErr_SetObject(parse_error.ptr(), instance.ptr());
+    } catch (const robogene::dev::ConfigError& e) {
+      PyErr_SetObject(config_error.ptr(), robogene::python::text_to_python(e.what()).ptr());
     } catch (const robogene::NetworkError& e) {
       PyErr_SetObject(network_error.ptr(), robogene::python::text_to_python(e.what()).ptr());
     } catch (const robogene::Error& e) {
@@ -42,6 +47,7 @@ PYBIND11_MODULE(_core, m) {
   robogene::python::bind_buffered_port(m);
   robogene::python::bind_rpc(m);
   robogene::python::bind_joint_data(m);
+  robogene::python::bind_devices(m);
 
   // Ports still open at exit are closed while the interpreter still grants the GIL to the
   // threads that run their callbacks (later, those threads could never finish).

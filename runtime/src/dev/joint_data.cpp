@@ -24,7 +24,7 @@ void add_ints(Bottle& out, const std::vector<std::int32_t>& values, std::size_t 
 }  // namespace
 
 bool encode_joint_data(DeviceDriver& device, Bottle& out) {
-  auto* enc = dynamic_cast<IEncoders*>(&device);
+  auto* enc = interface_of<IEncoders>(device);
   std::int32_t axes = 0;
   if (!enc || !enc->getAxes(axes) || axes < 0) return false;
   const auto n = static_cast<std::size_t>(axes);
@@ -35,10 +35,10 @@ bool encode_joint_data(DeviceDriver& device, Bottle& out) {
   const bool pos_ok = got(enc->getEncoders(pos), pos);
   const bool vel_ok = got(enc->getEncoderSpeeds(vel), vel);
   const bool acc_ok = got(enc->getEncoderAccelerations(acc), acc);
-  auto* trq = dynamic_cast<ITorqueControl*>(&device);
+  auto* trq = interface_of<ITorqueControl>(device);
   const bool trq_ok = trq && got(trq->getTorques(torque), torque);
   std::vector<ControlMode> modes;
-  auto* icm = dynamic_cast<IControlMode*>(&device);
+  auto* icm = interface_of<IControlMode>(device);
   const bool modes_ok = icm && got(icm->getControlModes(modes), modes);
   std::vector<std::int32_t> mode_codes;
   for (ControlMode m : modes) mode_codes.push_back(static_cast<std::int32_t>(m));

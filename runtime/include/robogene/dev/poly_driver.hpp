@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //
 // PolyDriver: owns one device created by the factory and hands out its interfaces (paper
-// section 3.2). view() is a dynamic_cast of the device to the requested interface, so it yields
-// nullptr when the device does not implement it.
+// section 3.2). view() is interface_of() the requested interface (a dynamic_cast, or what a
+// device written in Python answers), so it yields nullptr when the device does not implement it.
 //
 //   PolyDriver device;
 //   device.open("test_motor");
@@ -35,6 +35,10 @@ class PolyDriver {
   bool open(const std::string& device, const Searchable& config) { return open_with(device, config); }
   // Closes the device (if open) and forgets it; views obtained earlier become dangling.
   bool close();
+  // Forgets the open device without closing it and hands it over (nullptr when none): for a
+  // caller that must keep the device's memory alive past close(), as the Python binding does
+  // while views of it are still referenced.
+  std::unique_ptr<DeviceDriver> release() { return std::move(device_); }
   bool is_valid() const { return device_ != nullptr; }
   // The open device (nullptr when none), for code that serves it whole (network wrappers).
   DeviceDriver* device() const { return device_.get(); }
@@ -43,7 +47,7 @@ class PolyDriver {
 
   template <class Interface>
   bool view(Interface*& out) const {
-    out = device_ ? dynamic_cast<Interface*>(device_.get()) : nullptr;
+    out = device_ ? interface_of<Interface>(*device_) : nullptr;
     return out != nullptr;
   }
 

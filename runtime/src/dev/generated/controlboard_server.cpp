@@ -1265,12 +1265,12 @@ Bottle single(const char* word) {
 }  // namespace
 
 ControlboardServer::ControlboardServer(DeviceDriver& device) {
-  ifaces_.iencoders = dynamic_cast<IEncoders*>(&device);
-  ifaces_.ipositioncontrol = dynamic_cast<IPositionControl*>(&device);
-  ifaces_.ivelocitycontrol = dynamic_cast<IVelocityControl*>(&device);
-  ifaces_.itorquecontrol = dynamic_cast<ITorqueControl*>(&device);
-  ifaces_.ipidcontrol = dynamic_cast<IPidControl*>(&device);
-  ifaces_.icontrolmode = dynamic_cast<IControlMode*>(&device);
+  ifaces_.iencoders = interface_of<IEncoders>(device);
+  ifaces_.ipositioncontrol = interface_of<IPositionControl>(device);
+  ifaces_.ivelocitycontrol = interface_of<IVelocityControl>(device);
+  ifaces_.itorquecontrol = interface_of<ITorqueControl>(device);
+  ifaces_.ipidcontrol = interface_of<IPidControl>(device);
+  ifaces_.icontrolmode = interface_of<IControlMode>(device);
 }
 
 std::vector<std::pair<std::string, std::string>> ControlboardServer::interfaces() const {

@@ -243,8 +243,8 @@ Bottle command_reply(const Bottle& req, bool done) {
 }  // namespace
 
 GrabberServer::GrabberServer(DeviceDriver& device) {
-  ifaces_.iframegrabberimage = dynamic_cast<IFrameGrabberImage*>(&device);
-  ifaces_.iframegrabbercontrols = dynamic_cast<IFrameGrabberControls*>(&device);
+  ifaces_.iframegrabberimage = interface_of<IFrameGrabberImage>(device);
+  ifaces_.iframegrabbercontrols = interface_of<IFrameGrabberControls>(device);
 }
 
 std::vector<std::pair<std::string, std::string>> GrabberServer::interfaces() const {

@@ -65,8 +65,8 @@ void add_network_devices(DriverFactory& factory) {
 }
 
 std::string wrapper_for(DeviceDriver& device) {
-  if (dynamic_cast<IEncoders*>(&device)) return "controlBoard_nws_yarp";
-  if (dynamic_cast<IFrameGrabberImage*>(&device)) return "frameGrabber_nws_yarp";
+  if (interface_of<IEncoders>(device)) return "controlBoard_nws_yarp";
+  if (interface_of<IFrameGrabberImage>(device)) return "frameGrabber_nws_yarp";
   return "";
 }
 

@@ -37,7 +37,7 @@ class ControlboardServer {
     IControlMode* icontrolmode = nullptr;
   };
 
-  // Finds the device's interfaces by dynamic_cast; the device must outlive the server.
+  // Finds the device's interfaces by interface_of(); the device must outlive the server.
   explicit ControlboardServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);

@@ -33,7 +33,7 @@ class GrabberServer {
     IFrameGrabberControls* iframegrabbercontrols = nullptr;
   };
 
-  // Finds the device's interfaces by dynamic_cast; the device must outlive the server.
+  // Finds the device's interfaces by interface_of(); the device must outlive the server.
   explicit GrabberServer(DeviceDriver& device);
 
   Bottle respond(const Bottle& request);

@@ -1,0 +1,100 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""pybind11 bindings of the generated C++ interfaces, enums and structs for robogene._core.
+
+Each interface is bound twice over: Python calls a C++ device through it (out-parameters become
+the return value, None when the device says no), and a Python class derived from it implements
+it for C++ (the trampoline: a C++ call reaches the Python method under the GIL and its return
+value fills the out-parameters). The typed stub of these bindings is robogene/_core.pyi, made
+from the compiled module by runtime/python/gen_stub.py like the rest of the module's."""
+from __future__ import annotations
+
+from ...idl.model import Field, Idl, Method, TypeRef
+from ..common import all_sources, described, environment, line_comment_header, param_name, vocab_int
+
+_SCALARS = {"joint": "int", "int32": "std::int32_t", "float64": "double", "bool": "bool",
+            "string": "std::string", "vocab": "robogene::vocab_t", "image_rgb": "ImageRgb"}
+_BY_VALUE = {"joint", "int32", "float64", "bool", "vocab"}
+
+
+def cpp_type(t: TypeRef) -> str:
+    return t.name if t.kind != "builtin" else _SCALARS[t.name]
+
+
+def value_type(f: Field) -> str:
+    return f"std::vector<{cpp_type(f.type)}>" if f.per_axis else cpp_type(f.type)
+
+
+def in_param(f: Field) -> str:
+    by_value = not f.per_axis and (f.type.kind == "enum" or f.type.name in _BY_VALUE)
+    return f"{value_type(f)} {param_name(f)}" if by_value else f"const {value_type(f)}& {param_name(f)}"
+
+
+def override_signature(m: Method) -> str:
+    """The C++ virtual the trampoline overrides (the same as cpp_interfaces declares)."""
+    params = [in_param(a) for a in m.args] + [f"{value_type(r)}& {param_name(r)}" for r in m.results]
+    return f"bool {m.cpp_name}({', '.join(params)})"
+
+
+def result_type(m: Method) -> str:
+    """What the bound method returns to Python: bool for a command, else the value or None."""
+    if not m.results:
+        return "bool"
+    if len(m.results) == 1:
+        return f"std::optional<{value_type(m.results[0])}>"
+    return f"std::optional<std::tuple<{', '.join(value_type(r) for r in m.results)}>>"
+
+
+def arg_names(m: Method) -> str:
+    return ", ".join(param_name(a) for a in m.args)
+
+
+def call_args(m: Method) -> str:
+    return ", ".join([param_name(a) for a in m.args] + [param_name(r) for r in m.results])
+
+
+def py_default(f: Field) -> str:
+    v = f.default
+    if f.type.enum:
+        return f"{f.type.name}::{v}"
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if f.type.name == "float64":
+        return repr(float(v))
+    if f.type.name == "vocab":
+        return f'robogene::vocab("{v}")'
+    if f.type.name == "string":
+        return 'std::string("' + v.replace("\\", "\\\\").replace('"', '\\"') + '")'
+    return str(v)
+
+
+def py_args(m: Method) -> str:
+    """The py::arg list of a bound method, defaults included."""
+    out = []
+    for a in m.args:
+        text = f'py::arg("{param_name(a)}")'
+        if a.has_default and a.type.enum:
+            # Spelled for the docstring (and so the stub) as Python writes the member.
+            text = (f'py::arg_v("{param_name(a)}", {py_default(a)}, '
+                    f'"{a.type.name}.{a.default.upper()}")')
+        elif a.has_default:
+            text += f" = {py_default(a)}"
+        out.append(text)
+    return "".join(f", {a}" for a in out)
+
+
+def cpp_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", " ") + '"'
+
+
+def emit(idl: Idl) -> dict[str, str]:
+    env = environment(__file__)
+    helpers = dict(cpp_type=cpp_type, value_type=value_type, in_param=in_param,
+                   override_signature=override_signature, result_type=result_type,
+                   arg_names=arg_names, call_args=call_args, py_args=py_args, param_name=param_name,
+                   described=described, cpp_string=cpp_string, vocab_int=vocab_int)
+    header = line_comment_header("//", "BSD-3-Clause", all_sources(idl))
+    needs_image = any(f.type.name == "image_rgb" for i in idl.interfaces for m in i.methods
+                      for f in m.args + m.results)
+    return {"bind_interfaces.cpp": env.get_template("bind_interfaces.cpp.j2").render(
+        header=header, idl=idl, needs_image=needs_image, **helpers)}
