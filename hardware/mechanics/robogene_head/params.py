@@ -24,6 +24,7 @@ PURCHASED_KINDS = {
     "joint_encoder": ("bits", "length", "width", "height", "mass"),
     "bearing": ("bore", "outside", "width", "mass"),
     "retaining_ring": ("bore", "groove_diameter", "groove_width", "thickness", "inner_diameter", "mass"),
+    "shim": ("bore", "outside", "thickness", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
     # a headless set screw (ISO 4026..4029): holding_force_N, the maker's axial holding force at its seating torque
