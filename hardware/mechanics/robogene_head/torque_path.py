@@ -19,7 +19,7 @@ from dataclasses import asdict, dataclass
 
 from . import drive_limits, torque_elements
 from .drive_sizing import required_margin
-from .params import CHAIN_JOINTS, HeadParameters, Node, ParameterError
+from .params import CHAIN_JOINTS, HeadParameters, Node
 
 ELEMENTS = ("plain", "bonded", "set_screw", "d_flat", "clamp", "belt")
 PAN_CONTROL = ("eyes_version", "eyes_vergence")   # the eye board's control joints, one motor per eye
