@@ -4,6 +4,8 @@
 is clear of it over the whole range, and stops angles inside the range or pins off the arm are refused."""
 import pytest
 import yaml
+from OCP.Bnd import Bnd_Box
+from OCP.BRepBndLib import BRepBndLib
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head.params import DEFAULT_PATH, ParameterError, load
@@ -14,6 +16,14 @@ def _distance(a, b) -> float:
     d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
     d.Perform()
     return d.Value()
+
+
+def _y_range(shape) -> tuple[float, float]:
+    """The shape's exact extent along y (OpenCASCADE's optimal box, not the meshed one)."""
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(shape.wrapped, box, False, False)
+    x0, y0, z0, x1, y1, z1 = box.Get()
+    return y0, y1
 
 
 def _copy(tmp_path, **stop):
@@ -54,9 +64,9 @@ def test_the_pins_stand_in_the_side_plates(params, assembly):
             pin, side = parts[f"eyes_tilt_stop_pin_{plate}_{i}"], parts[f"head_side_plate_{plate}"]
             inside = pin.shape.intersect(side.shape).Volume()
             assert inside < 1e-3                      # the hole takes it: no overlap
-            box, plate_box = pin.shape.BoundingBox(), side.shape.BoundingBox()
-            into = (box.ymax - plate_box.ymin) if plate == "left" else (plate_box.ymax - box.ymin)
-            assert into == pytest.approx(depth)
+            (pin_y0, pin_y1), (plate_y0, plate_y1) = _y_range(pin.shape), _y_range(side.shape)
+            into = (pin_y1 - plate_y0) if plate == "left" else (plate_y1 - pin_y0)
+            assert into == pytest.approx(depth, abs=1e-6)
 
 
 @pytest.mark.parametrize("stop, where", [
