@@ -21,6 +21,7 @@ ALLOWED_CONSTANTS = {
     ("base.py", "GREEN"), ("face.py", "COLOR"),                  # display colours
     ("board_stack.py", "MASK_AND_COPPER"),                      # what KiCad's STEP leaves out of a PCB
     ("purchased.py", "STUD_WEB"),                               # envelope of a purchased standoff
+    ("neck.py", "LUG_GAP"),                                     # a design rule (over a bearing's axial play), no part's size
 }
 
 

@@ -18,14 +18,17 @@ DEFAULT_PATH = Path(__file__).resolve().parents[2] / "head-parameters.yaml"
 CONTROL_JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "eyes_version", "eyes_vergence")
 CHAIN_JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "left_eye_pan", "right_eye_pan")
 PURCHASED_KINDS = {
-    "motor": ("diameter", "length", "shaft_diameter", "shaft_length", "mass"),
+    "motor": ("voltage", "diameter", "length", "shaft_diameter", "shaft_length", "mass"),
     "gearhead": ("ratio", "diameter", "length", "shaft_diameter", "shaft_length", "mass"),
     "encoder": ("lines", "diameter", "length", "mass"),
     "joint_encoder": ("bits", "length", "width", "height", "mass"),
     "bearing": ("bore", "outside", "width", "mass"),
     "retaining_ring": ("bore", "groove_diameter", "groove_width", "thickness", "inner_diameter", "mass"),
+    "shim": ("bore", "outside", "thickness", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
+    # a headless set screw (ISO 4026..4029): holding_force_N, the maker's axial holding force at its seating torque
+    "set_screw": ("diameter", "length", "holding_force_N", "mass"),
     "pin": ("diameter", "length", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
     "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),

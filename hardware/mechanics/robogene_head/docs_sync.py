@@ -79,6 +79,21 @@ def unpowered_table(data: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def torque_table(data: dict) -> str:
+    rows = ["| joint | element | at | capacity (N m) | drive's peak there (N m) | margin | what |",
+            "|---|---|---|---:|---:|---:|---|"]
+    for e in data["elements"]:
+        flag = "" if e["ok"] else " **too weak**"
+        rows.append(f"| {e['joint']} | {e['element']} | {e['at']} | {e['capacity_Nm']:.3f} | {e['peak_Nm']:.3f} | "
+                    f"{e['margin']:.2f}{flag} | {e['what']} |")
+    rows += ["", "| joint | continuous (N m) | board's current limit (mA) | kt (mN m/A) | at the limit (N m) | "
+             "peak at the gearhead shaft (N m) | set by |", "|---|---:|---:|---:|---:|---:|---|"]
+    for j, p in data["peaks"].items():
+        rows.append(f"| {j} | {p['continuous_Nm']:.3f} | {p['current_limit_mA']:.0f} | {p['kt_mNm_per_A']:.2f} | "
+                    f"{p['current_Nm']:.3f} | {p['at_gearhead_Nm']:.3f} | {p['set_by']} |")
+    return "\n".join(rows) + "\n"
+
+
 def eyes_table(e: dict) -> str:
     return "\n".join([
         "| | allowed (budget) | the eye-pan drives |", "|---|---:|---:|",
@@ -96,6 +111,7 @@ def blocks(fab: Path) -> dict[str, str]:
             "DRIVES": drive_table(json.loads((fab / "config" / "head-joints.json").read_text())),
             "SIZING": sizing_table(json.loads((fab / "reports" / "drive-sizing.json").read_text())),
             "UNPOWERED": unpowered_table(json.loads((fab / "reports" / "unpowered.json").read_text())),
+            "TORQUE": torque_table(json.loads((fab / "reports" / "torque-path.json").read_text())),
             "EYES": eyes_table(json.loads((fab / "reports" / "eye-accuracy.json").read_text()))}
 
 

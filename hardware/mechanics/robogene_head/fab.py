@@ -23,7 +23,7 @@ from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
 from . import (drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
-               sequence, threads, unpowered, urdf)
+               sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
@@ -168,14 +168,18 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         raise BuildError(str(exc)) from None
     progress.note("drive sizing: every drive within its continuous ratings, smallest margin "
                   f"{min(j.margin for j in sizing.joints):.2f} ({drive_sizing.required_margin(params):g} required)")
-    # What each joint does when the power goes, and the eyes' error against the stereo budget: reported, so that
-    # docs/fabricate.md states them from the package (neither is a pass/fail check yet: see there).
+    # What each joint does when the power goes, the eyes' error against the stereo budget and each joint's torque path
+    # against its drive's peak torque: reported, so that docs/fabricate.md states them from the package (none is a
+    # pass/fail check of the build yet: the design does not meet them; see there).
     released = unpowered.analyse(params, props, {j.joint: j.gravity_Nm for j in sizing.joints})
     _write(out / "reports" / "unpowered.txt", unpowered.format_table(released) + "\n")
     _write(out / "reports" / "unpowered.json", unpowered.dumps(released))
     eyes = eye_accuracy.budget(params)
     _write(out / "reports" / "eye-accuracy.txt", eye_accuracy.format_report(eyes) + "\n")
     _write(out / "reports" / "eye-accuracy.json", eye_accuracy.dumps(eyes))
+    torque = torque_path.analyse(params)
+    _write(out / "reports" / "torque-path.txt", torque_path.format_table(torque) + "\n")
+    _write(out / "reports" / "torque-path.json", torque_path.dumps(torque))
 
     # 4. Assembly STEP and GLB at the zero pose.
     asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]

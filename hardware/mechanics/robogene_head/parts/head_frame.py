@@ -10,7 +10,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import gearhead_screws, head_joins, mounts, neck, purchased
+from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_stops
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
@@ -48,6 +48,7 @@ def build(params: HeadParameters) -> list[Part]:
                                                                                     yaw_slot)])
     # Left side plate in its design frame; the right plate is its mirror image.
     face_z = h.vec("face_screw_z", 2)
+    stop_pins, stop_holes = tilt_stops.pins(params, inner, (tx, tz), "head_frame")
     tap_depth = head_joins.tap_depth(params)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
                     geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
@@ -56,7 +57,7 @@ def build(params: HeadParameters) -> list[Part]:
                     # M3 tapped holes for the face plate screws, modelled at the thread's size like every
                     # tapped hole of the head (the drawing's note gives the tap drill)
                     *[geom.cyl("x", m3, sx1 - tap_depth, sx1 + 1, (inner + st / 2, z)) for z in face_z],
-                    *joins.holes["head_side_plate"])
+                    *joins.holes["head_side_plate"], *stop_holes)
     side = geom.single_solid(side, "side plate")
     side_right = side.mirror("XZ")
     back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"],
@@ -69,9 +70,9 @@ def build(params: HeadParameters) -> list[Part]:
         Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"),
              note=notes["head_floor"], **al),
         Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side,
-             note=notes["head_side_plate"], **al),
+             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right,
-             note=notes["head_side_plate"], **al),
+             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, note=notes["head_back_plate"], **al),
         Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, note=notes["head_top_bar"], **al),
         purchased.bearing(params, "neck_yaw_bearing", params.drive("neck_yaw").text("bearing"), "head_frame",
@@ -118,7 +119,7 @@ def build(params: HeadParameters) -> list[Part]:
     clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
                                             inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
     parts.append(clamp)
-    return parts + clamp_screws + belt_parts(params) + joins.screws
+    return parts + clamp_screws + belt_parts(params) + joins.screws + stop_pins
 
 
 def _yaw_hub_slot(params: HeadParameters, bore: float, ym: float, z0: float, z1: float) -> list[cq.Shape]:

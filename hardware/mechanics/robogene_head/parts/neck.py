@@ -10,23 +10,27 @@ from . import board_stack, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
+# mm a shim ring must hold a retaining ring's lugs off a bearing's turning inner ring: more than a small deep-groove
+# bearing's axial play (about 0.1 mm), which lets the inner ring shift towards the ring
+LUG_GAP = 0.3
 STANDOFF = "standoff-M3x46-FF"
 UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
                       "face for the pitch motor mount")
 UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: outer "
-                        "ring against the shoulder, DIN 472 groove outside it")
+                        "ring against the shoulder, a shim ring, DIN 472 groove outside them")
 PITCH_STAGE_NOTE = ("Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount; cross bar: "
                     "2 x 3.4 through at the front for the front lug's screws")
 FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: outer ring "
-                  "against the shoulder, DIN 472 groove outside it")
+                  "against the shoulder, a shim ring, DIN 472 groove outside them")
 
 
 def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
-                  at: tuple[float, float]) -> tuple[list, float, float]:
+                  at: tuple[float, float]) -> tuple[list, float, float, float]:
     """Bore of a floating bearing through a wall from `inner` to `outer` (coordinates along `axis`, either order):
-    a shoulder next to the inside, the bearing's seat, the retaining ring's groove and a land outside it
-    (geometry.bearing_seats). Returns the cutting tools and where the bearing and the ring start (their inner
-    faces) along the axis."""
+    a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's groove
+    and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over the
+    bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting tools
+    and where the bearing, the shim and the ring start (their inner faces) along the axis."""
     seats = params.geometry("bearing_seats")
     bearing = params.purchased(params.drive(joint).text("bearing"))
     ring = params.purchased(seats.text("bearing_ring"))
@@ -34,23 +38,46 @@ def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float
     if abs(ring.num("bore") - bo) > 1e-9:
         raise ParameterError(f"{params.path}: geometry.bearing_seats.bearing_ring: {seats.text('bearing_ring')} is for a "
                              f"{ring.num('bore'):g} mm bore, the {joint} bearing is {bo:g} outside")
+    inner_ring = bearing.num("inner_ring_outside", positive=True)
+    lugs = ring.num("lug_inner_diameter", positive=True)
+    s = 0.0
+    if spacer(params):
+        shim = params.purchased(spacer(params))
+        if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
+            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {spacer(params)} "
+                                 f"({shim.num('bore'):g} x {shim.num('outside'):g}) must fit the {bo:g} mm bore and clear "
+                                 f"the {joint} bearing's inner ring ({inner_ring:g} across)")
+        s = shim.num("thickness", positive=True)
+    if lugs < inner_ring and s < LUG_GAP:
+        raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: the {seats.text('bearing_ring')} ring's lugs "
+                             f"reach in to {lugs:g}, over the {joint} bearing's inner ring ({inner_ring:g} across), "
+                             f"which turns while they stand still: a shim ring at least {LUG_GAP:g} thick must keep "
+                             f"them off it (this one: {s:g})")
     sign = 1.0 if outer > inner else -1.0
     wall = abs(outer - inner)
     land, m = seats.num("land", positive=True), ring.num("groove_width", positive=True)
-    shoulder = wall - bw - m - land
+    shoulder = wall - bw - s - m - land
     if shoulder < 1.0:
         raise ParameterError(f"{params.path}: the wall holding the {joint} bearing is {wall:g} thick: it needs "
-                             f"{bw + m + land + 1:g} for the bearing, the ring's groove, the land and a 1 mm shoulder")
+                             f"{bw + s + m + land + 1:g} for the bearing, the shim, the ring's groove, the land and a "
+                             f"1 mm shoulder")
     hole = seats.num("shoulder_hole", positive=True)
     if hole >= bo:
         raise ParameterError(f"{params.path}: geometry.bearing_seats.shoulder_hole: {hole:g} leaves no shoulder for a "
                              f"{bo:g} mm bearing")
     b0 = inner + sign * shoulder
-    g0 = b0 + sign * bw
+    s0 = b0 + sign * bw
+    g0 = s0 + sign * s
     tools = [geom.cyl(axis, hole, inner - sign, b0 + sign * 0.5, at),
              geom.cyl(axis, bo, b0, outer + sign, at),
              geom.cyl(axis, ring.num("groove_diameter"), g0, g0 + sign * m, at)]
-    return tools, b0, g0
+    return tools, b0, s0, g0
+
+
+def spacer(params: HeadParameters) -> str:
+    """The shim ring between a floating bearing and its retaining ring ("" where the seats have none)."""
+    seats = params.geometry("bearing_seats")
+    return seats.text("spacer") if seats.has("spacer") else ""
 
 
 def bearing_ring(params: HeadParameters) -> str:
@@ -109,7 +136,7 @@ def _base(params: HeadParameters) -> list[Part]:
                              *bottom_holes,
                              *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
                                for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
-    seat, b0, g0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
+    seat, b0, s0, g0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
     upright_bearing = geom.cut(block, *seat, *bottom_holes)
 
     parts = [
@@ -135,6 +162,9 @@ def _base(params: HeadParameters) -> list[Part]:
     y_out = gap / 2 + ut
     parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"),
                                    "neck_base", loc(0, -b0, hp, rx=90)))
+    if spacer(params):
+        parts.append(purchased.shim(params, "neck_pitch_bearing_spacer", spacer(params), "neck_base",
+                                    loc(0, -s0, hp, rx=90)))
     parts.append(purchased.retaining_ring(params, "neck_pitch_bearing_ring", bearing_ring(params), "neck_base",
                                           loc(0, -g0, hp, rx=90)))
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
@@ -194,7 +224,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
                      geom.cyl("x", shaft_hole(params, "neck_roll"), -x_out - 1, -span / 2 + 1, (0, zr)),
                      *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
                      *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws])
-    seat, b0, g0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
+    seat, b0, s0, g0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
     front = geom.cut(geom.box(fx0, fx1, -lw / 2, lw / 2, bh / 2, zr + lw / 2), *seat,
                      *[geom.cyl("z", 3.0, bh / 2 - 1, bh / 2 + lug_screw.num("length") - 4, c) for c in lug_screws])
     parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
@@ -205,6 +235,9 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"front_lug_screw_{i}", SCREW, "neck_pitch_link", loc(x, y, bar)))
     key = params.drive("neck_roll").text("bearing")
     parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(b0, 0, zr, ry=90)))
+    if spacer(params):
+        parts.append(purchased.shim(params, "neck_roll_bearing_spacer", spacer(params), "neck_pitch_link",
+                                    loc(s0, 0, zr, ry=90)))
     parts.append(purchased.retaining_ring(params, "neck_roll_bearing_ring", bearing_ring(params), "neck_pitch_link",
                                           loc(g0, 0, zr, ry=90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))

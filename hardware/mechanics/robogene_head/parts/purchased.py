@@ -68,6 +68,13 @@ def retaining_ring(params: HeadParameters, name: str, key: str, link: str, place
     return _purchased(params, name, key, link, shape, placement, DARK)
 
 
+def shim(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Flat ring z 0..thickness."""
+    r = params.purchased(key)
+    shape = geom.tube("z", r.num("outside"), r.num("bore"), 0, r.num("thickness"))
+    return _purchased(params, name, key, link, shape, placement, STEEL)
+
+
 def joint_encoder(params: HeadParameters, name: str, link: str, placement: cq.Location, key="ams-AS5048A") -> Part:
     """Sensor board, centred on its axis, z 0..height (the magnet faces z = 0)."""
     e = params.purchased(key)

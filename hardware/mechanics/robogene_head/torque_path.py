@@ -1,0 +1,238 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The torque path of every joint: how the drive's torque passes from its gearhead's output shaft to the link, element
+by element (torque_paths: in the parameter file, as the CAD draws them), and whether each element carries the
+drive's peak torque there, drive_sizing.margin times over (the element models: torque_elements.py).
+
+The peak torque a drive can put through its elements is the larger of
+  continuous  min(motor continuous torque x N x eta, gearhead continuous rating): what the drive sizing counts on
+  current     kt x the board's current limit (motor_control.joints.<joint>.current_limit) x N x eta: what the drive
+              delivers stalled against a stop or an obstacle, which the board allows. kt = U / omega0 from the motor's
+              nominal voltage and no-load speed; the no-load current's voltage drop is left out, which errs high.
+at the gearhead's output shaft (at: gearhead), times the belt stage after it (at: joint). An element that carries less
+slips or breaks before the drive stalls."""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, dataclass
+
+from robogene_head_model import drive_limits
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, Node
+
+from . import torque_elements
+from .drive_sizing import required_margin
+
+ELEMENTS = ("plain", "bonded", "set_screw", "d_flat", "clamp", "belt")
+PAN_CONTROL = ("eyes_version", "eyes_vergence")   # the eye board's control joints, one motor per eye
+
+
+class TorquePathError(RuntimeError):
+    """An element below the required margin; the message is the table."""
+
+
+@dataclass(frozen=True)
+class Peak:
+    joint: str
+    continuous_Nm: float        # at the gearhead's output shaft
+    current_Nm: float
+    kt_mNm_per_A: float
+    current_limit_mA: float
+    belt: float
+
+    @property
+    def at_gearhead(self) -> float:
+        return max(self.continuous_Nm, self.current_Nm)
+
+    @property
+    def set_by(self) -> str:
+        return "continuous rating" if self.continuous_Nm >= self.current_Nm else "current limit"
+
+
+@dataclass(frozen=True)
+class ElementCheck:
+    joint: str
+    index: int
+    element: str
+    what: str
+    at: str                 # "gearhead" or "joint"
+    capacity_Nm: float
+    peak_Nm: float          # the drive's peak torque at the element
+    margin: float           # capacity / peak
+
+
+@dataclass(frozen=True)
+class TorqueReport:
+    required: float
+    peaks: dict[str, Peak]
+    elements: list[ElementCheck]
+
+    def weakest(self, joint: str) -> ElementCheck:
+        return min((e for e in self.elements if e.joint == joint), key=lambda e: e.margin)
+
+    def failures(self) -> list[ElementCheck]:
+        return [e for e in self.elements if e.margin < self.required]
+
+    @property
+    def ok(self) -> bool:
+        return not self.failures()
+
+
+def _current_limit(params: HeadParameters, joint: str) -> float:
+    """mA per motor that the board allows the joint's motor."""
+    joints = params.root.node("motor_control").node("joints")
+    if joint in ("left_eye_pan", "right_eye_pan"):
+        return max(joints.node(c).num("current_limit", positive=True) for c in PAN_CONTROL)
+    return joints.node(joint).num("current_limit", positive=True)
+
+
+def peak(params: HeadParameters, joint: str) -> Peak:
+    drive = params.drive(joint)
+    motor, gear = params.purchased(drive.text("motor")), params.purchased(drive.text("gearhead"))
+    ratio = gear.num("ratio", positive=True)
+    eta = gear.num("efficiency", positive=True, maximum=1.0)
+    continuous = min(motor.num("continuous_torque_mNm", positive=True) * 1e-3 * ratio * eta,
+                     gear.num("continuous_torque_Nm", positive=True))
+    omega0 = motor.num("no_load_speed_rpm", positive=True) * 2 * math.pi / 60
+    kt = motor.num("voltage", positive=True) / omega0          # N m / A
+    limit = _current_limit(params, joint)
+    current = kt * limit * 1e-3 * ratio * eta
+    return Peak(joint, continuous, current, kt * 1e3, limit, drive_limits.belt_ratio(params, joint))
+
+
+def _shaft(params: HeadParameters, joint: str, item: Node) -> float:
+    value = item.raw("shaft")
+    if value == "gearhead":
+        return params.purchased(params.drive(joint).text("gearhead")).num("shaft_diameter", positive=True)
+    return item.num("shaft", positive=True)
+
+
+def _count(item: Node, key: str) -> int:
+    value = item.num(key, positive=True)
+    if value != int(value):
+        raise item._fail(key, f"expected a whole number, got {value:g}")
+    return int(value)
+
+
+def _pitch_diameter(params: HeadParameters, teeth: int) -> float:
+    return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / math.pi
+
+
+def _belt_centre(params: HeadParameters, joint: str) -> float:
+    """The belt stage's centre distance, as the CAD places the motor (parts/mounts.belts)."""
+    head = params.geometry("head")
+    if joint == "neck_yaw":
+        return abs(head.num("yaw_motor_x"))
+    tilt, tm = params.joints["eyes_tilt"].origin, head.node("tilt_motor")
+    return math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z"))
+
+
+def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
+    """ISO 5299 rates the belt at its small pulley; the same tension gives torque in proportion to the pulley's
+    diameter at the motor pulley (at: gearhead) and the joint pulley (at: joint)."""
+    if joint not in drive_limits.BELTED:
+        raise item._fail("element", f"{joint} has no belt stage")
+    pulleys = params.geometry("pulleys")
+    node = pulleys.node(drive_limits.BELTED[joint])
+    motor, joint_teeth = int(node.num("motor_teeth", positive=True)), int(node.num("joint_teeth", positive=True))
+    d_motor, d_joint = _pitch_diameter(params, motor), _pitch_diameter(params, joint_teeth)
+    small, d_small, d_large = min((motor, d_motor, d_joint), (joint_teeth, d_joint, d_motor))
+    in_mesh = torque_elements.teeth_in_mesh(small, d_small, d_large, _belt_centre(params, joint))
+    rating = torque_elements.mxl_rating(d_small, params.purchased(pulleys.text("belt")).num("width", positive=True),
+                                        in_mesh)
+    return rating * (d_motor if at == "gearhead" else d_joint) / d_small
+
+
+def capacity(params: HeadParameters, joint: str, item: Node, at: str) -> float:
+    """N m the element passes, at its own place (the gearhead shaft or the joint)."""
+    kind = item.text("element")
+    try:
+        if kind == "plain":
+            _shaft(params, joint, item)
+            return torque_elements.plain()
+        if kind == "bonded":
+            return torque_elements.bonded(_shaft(params, joint, item), item.num("length", positive=True),
+                                          item.num("shear_strength_MPa", positive=True))
+        if kind == "set_screw":
+            screw = item.text("screw")
+            entry = params.purchased(screw)
+            if entry.text("kind") != "set_screw":
+                raise item._fail("screw", f"{screw!r} is a {entry.text('kind')}, expected a set_screw")
+            return torque_elements.set_screws(_count(item, "count"), entry.num("holding_force_N", positive=True),
+                                              _shaft(params, joint, item))
+        if kind == "d_flat":
+            return torque_elements.d_flat(_shaft(params, joint, item), item.num("depth", positive=True),
+                                          item.num("length", positive=True), _count(item, "flats"),
+                                          item.num("pressure_MPa", positive=True))
+        if kind == "clamp":
+            return torque_elements.clamp(_shaft(params, joint, item), _count(item, "count"),
+                                         item.num("screw_diameter", positive=True), item.text("strength_class"),
+                                         item.num("thread_friction", positive=True),
+                                         item.num("friction", positive=True))
+        if kind == "belt":
+            return _belt(params, joint, item, at)
+    except torque_elements.ElementError as exc:
+        raise item._fail("element", str(exc)) from None
+    raise item._fail("element", f"unknown element {kind!r}; known: {', '.join(ELEMENTS)}")
+
+
+def analyse(params: HeadParameters) -> TorqueReport:
+    paths = params.root.node("torque_paths")
+    extra = sorted(set(paths.keys()) - set(CHAIN_JOINTS))
+    if extra:
+        raise paths._fail(extra[0], "not a chain joint (" + ", ".join(CHAIN_JOINTS) + ")")
+    peaks, checks = {}, []
+    for joint in CHAIN_JOINTS:
+        listed = paths.raw(joint)
+        if not isinstance(listed, list) or not listed:
+            raise paths._fail(joint, "expected a list of the elements from the gearhead's output shaft to the link")
+        p = peak(params, joint)
+        peaks[joint] = p
+        for i, entry in enumerate(listed):
+            item = Node(entry, f"torque_paths.{joint}[{i}]", str(params.path))
+            at = item.text("at")
+            if at not in ("gearhead", "joint"):
+                raise item._fail("at", f"expected gearhead or joint, got {at!r}")
+            demand = p.at_gearhead * (p.belt if at == "joint" else 1.0)
+            cap = capacity(params, joint, item, at)
+            checks.append(ElementCheck(joint, i, item.text("element"), item.text("what"), at, cap, demand,
+                                       cap / demand))
+    return TorqueReport(required_margin(params), peaks, checks)
+
+
+def format_table(report: TorqueReport) -> str:
+    lines = [f"Torque paths: each element against the drive's peak torque there, required margin {report.required:g}",
+             "joint          element    at        capacity  peak    margin  what",
+             "                                    (N m)     (N m)"]
+    for e in report.elements:
+        flag = "ok" if e.margin >= report.required else "TOO WEAK"
+        lines.append(f"{e.joint:<14} {e.element:<10} {e.at:<8} {e.capacity_Nm:9.3f} {e.peak_Nm:7.3f} {e.margin:7.2f}  "
+                     f"{e.what} [{flag}]")
+    lines.append("")
+    lines.append("Peak torque at the gearhead's output shaft: the larger of the continuous rating and the board's "
+                 "current limit")
+    for p in report.peaks.values():
+        lines.append(f"{p.joint:<14} continuous {p.continuous_Nm:6.3f}  at {p.current_limit_mA:5.0f} mA "
+                     f"(kt {p.kt_mNm_per_A:5.2f} mN m/A) {p.current_Nm:6.3f}  -> {p.at_gearhead:6.3f} N m "
+                     f"({p.set_by}), belt stage {p.belt:.3f}")
+    return "\n".join(lines)
+
+
+def report_json(report: TorqueReport) -> dict:
+    return {"required_margin": report.required, "ok": report.ok,
+            "peaks": {j: dict(asdict(p), at_gearhead_Nm=p.at_gearhead, set_by=p.set_by)
+                      for j, p in report.peaks.items()},
+            "elements": [dict(asdict(e), ok=e.margin >= report.required) for e in report.elements],
+            "weakest": {j: asdict(report.weakest(j)) for j in report.peaks}}
+
+
+def enforce(report: TorqueReport) -> None:
+    if not report.ok:
+        names = ", ".join(f"{e.joint}[{e.index}] {e.element} ({e.capacity_Nm:.3f} of {e.peak_Nm:.3f} N m)"
+                          for e in report.failures())
+        raise TorquePathError(f"torque path elements below the required margin {report.required:g}: {names}\n"
+                              + format_table(report))
+
+
+def dumps(report: TorqueReport) -> str:
+    return json.dumps(report_json(report), indent=1)
