@@ -52,31 +52,31 @@ def _actor(shape, color, alpha=1.0):
     return actor
 
 
-def render(assembly: Assembly, view: View, path: Path, size=(800, 640)) -> None:
+def stage(size, bottom, top):
+    """An off-screen window of size (px) with one renderer on a gradient background, bottom to top colour."""
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(*size)
     window.SetMultiSamples(4)
     renderer = vtk.vtkRenderer()
-    renderer.SetBackground(0.97, 0.97, 0.98)
-    renderer.SetBackground2(0.82, 0.86, 0.92)
+    renderer.SetBackground(*bottom)
+    renderer.SetBackground2(*top)
     renderer.GradientBackgroundOn()
     window.AddRenderer(renderer)
-    unknown = set(view.hidden) - {p.name for p in assembly.parts}
-    if unknown:
-        raise ValueError(f"view {view.name}: no part named {', '.join(sorted(unknown))}")
-    for placed in assembly.pose(view.pose):
-        if placed.part.name not in view.hidden and (not view.links or placed.part.link in view.links):
-            for _, shape, color in placed.part.pieces(placed.shape):
-                renderer.AddActor(_actor(shape, color, placed.part.alpha))
+    return window, renderer
+
+
+def shoot(window, renderer, focus: np.ndarray, distance: float, azimuth: float, elevation: float, zoom: float,
+          path: Path) -> None:
+    """Aim the camera at focus from distance (mm), turned by azimuth (deg) about world z and raised by elevation,
+    fit the scene, zoom, and write the window as a PNG."""
     camera = renderer.GetActiveCamera()
-    # World z is up; look at the head from the front (+x), turned by azimuth about z and raised by elevation.
-    camera.SetFocalPoint(0, 0, 90)
-    az, el = np.radians(view.azimuth), np.radians(view.elevation)
-    camera.SetPosition(600 * np.cos(el) * np.cos(az), 600 * np.cos(el) * np.sin(az), 90 + 600 * np.sin(el))
+    camera.SetFocalPoint(*focus)
+    az, el = np.radians(azimuth), np.radians(elevation)
+    camera.SetPosition(*(focus + distance * np.array([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), np.sin(el)])))
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCamera()
-    camera.Zoom(1.25)
+    camera.Zoom(zoom)
     renderer.ResetCameraClippingRange()
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
@@ -88,3 +88,16 @@ def render(assembly: Assembly, view: View, path: Path, size=(800, 640)) -> None:
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
     window.Finalize()
+
+
+def render(assembly: Assembly, view: View, path: Path, size=(800, 640)) -> None:
+    window, renderer = stage(size, (0.97, 0.97, 0.98), (0.82, 0.86, 0.92))
+    unknown = set(view.hidden) - {p.name for p in assembly.parts}
+    if unknown:
+        raise ValueError(f"view {view.name}: no part named {', '.join(sorted(unknown))}")
+    for placed in assembly.pose(view.pose):
+        if placed.part.name not in view.hidden and (not view.links or placed.part.link in view.links):
+            for _, shape, color in placed.part.pieces(placed.shape):
+                renderer.AddActor(_actor(shape, color, placed.part.alpha))
+    # World z is up; look at the head from the front (+x), turned by azimuth about z and raised by elevation.
+    shoot(window, renderer, np.array([0.0, 0.0, 90.0]), 600, view.azimuth, view.elevation, 1.25, path)

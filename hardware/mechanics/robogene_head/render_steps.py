@@ -11,6 +11,7 @@ import numpy as np
 import vtk
 
 from .assembly import Assembly
+from .render import shoot, stage
 from .sequence import Sequence, Step
 
 GREY = (0.78, 0.79, 0.81)
@@ -90,15 +91,7 @@ def _arrow(points: list[np.ndarray], radius: float):
 
 
 def render_step(meshes: _Meshes, step: Step, placed: list[str], path: Path) -> None:
-    window = vtk.vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(*SIZE)
-    window.SetMultiSamples(4)
-    renderer = vtk.vtkRenderer()
-    renderer.SetBackground(1, 1, 1)
-    renderer.SetBackground2(0.86, 0.89, 0.94)
-    renderer.GradientBackgroundOn()
-    window.AddRenderer(renderer)
+    window, renderer = stage(SIZE, (1, 1, 1), (0.86, 0.89, 0.94))
     for name in placed:
         renderer.AddActor(_actor(meshes.poly(name), GREY, 0.55 if placed and step.parts else 1.0))
     for name in step.parts:
@@ -117,25 +110,7 @@ def render_step(meshes: _Meshes, step: Step, placed: list[str], path: Path) -> N
         # the parts where they start, faint, so the arrow reads as their travel
         for name in step.parts:
             renderer.AddActor(_actor(meshes.poly(name), NEW, 0.18, offset=step.path[0]))
-    centre = (lo + hi) / 2
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(*centre)
-    az, el = np.radians(35), np.radians(22)
-    camera.SetPosition(*(centre + 800 * np.array([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), np.sin(el)])))
-    camera.SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    camera.Zoom(1.15)
-    renderer.ResetCameraClippingRange()
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(str(path))
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    window.Finalize()
+    shoot(window, renderer, (lo + hi) / 2, 800, 35, 22, 1.15, path)
 
 
 def render_all(assembly: Assembly, sequence: Sequence, folder: Path, progress=None) -> list[Path]:
