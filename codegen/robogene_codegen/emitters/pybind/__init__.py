@@ -9,25 +9,9 @@ value fills the out-parameters). The typed stub of these bindings is robogene/_c
 from the compiled module by runtime/python/gen_stub.py like the rest of the module's."""
 from __future__ import annotations
 
-from ...idl.model import Field, Idl, Method, TypeRef
+from ...idl.model import Field, Idl, Method
 from ..common import all_sources, described, environment, line_comment_header, param_name, vocab_int
-
-_SCALARS = {"joint": "int", "int32": "std::int32_t", "float64": "double", "bool": "bool",
-            "string": "std::string", "vocab": "robogene::vocab_t", "image_rgb": "ImageRgb"}
-_BY_VALUE = {"joint", "int32", "float64", "bool", "vocab"}
-
-
-def cpp_type(t: TypeRef) -> str:
-    return t.name if t.kind != "builtin" else _SCALARS[t.name]
-
-
-def value_type(f: Field) -> str:
-    return f"std::vector<{cpp_type(f.type)}>" if f.per_axis else cpp_type(f.type)
-
-
-def in_param(f: Field) -> str:
-    by_value = not f.per_axis and (f.type.kind == "enum" or f.type.name in _BY_VALUE)
-    return f"{value_type(f)} {param_name(f)}" if by_value else f"const {value_type(f)}& {param_name(f)}"
+from ..cpp_interfaces import cpp_default, cpp_type, in_param, value_type
 
 
 def override_signature(m: Method) -> str:
@@ -54,18 +38,9 @@ def call_args(m: Method) -> str:
 
 
 def py_default(f: Field) -> str:
-    v = f.default
-    if f.type.enum:
-        return f"{f.type.name}::{v}"
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if f.type.name == "float64":
-        return repr(float(v))
-    if f.type.name == "vocab":
-        return f'robogene::vocab("{v}")'
-    if f.type.name == "string":
-        return 'std::string("' + v.replace("\\", "\\\\").replace('"', '\\"') + '")'
-    return str(v)
+    """The C++ expression of an argument's default; a string is spelled std::string so py::arg_v keeps its type."""
+    text = cpp_default(f)
+    return f"std::string({text})" if f.type.name == "string" and not f.type.enum else text
 
 
 def py_args(m: Method) -> str:
