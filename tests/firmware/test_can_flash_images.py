@@ -17,7 +17,7 @@ import pytest
 from test_firmware_images import FAB, ROOT, boards
 
 ROBOGENE = ROOT / "build" / "bin" / "robogene"
-HEAD_INI = ROOT / "drivers" / "can" / "config" / "head.ini"
+HEAD_INI = ROOT / "drivers" / "can" / "generated" / "head.ini"
 
 
 @pytest.fixture(scope="module")
