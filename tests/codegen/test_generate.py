@@ -209,14 +209,14 @@ def test_a_method_added_to_the_idl_reaches_the_python_binding(tmp_path):
     root = make_copy(tmp_path)
     idl = root / "interfaces/idl/iencoders.yaml"
     idl.write_text(idl.read_text() + textwrap.indent(NEW_METHOD, "  "))
-    assert main(["generate", "--root", str(root)]) == 0
+    assert main(["generate", "--root", str(root), "--only", "idl"]) == 0
     binding = root / "runtime/python/src/generated/bind_interfaces.cpp"
     text = binding.read_text()
     assert "bool getEncoderTemperature(int j, double& temp) override {" in text
     assert '"IEncoders", "getEncoderTemperature")(j);' in text
     assert '"getEncoderTemperature",\n          [](IEncoders& self, int j) -> std::optional<double> {' in text
     cc = subprocess.run(["g++", "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra", "-Werror",
-                         "-I", str(root / "runtime/include"), "-I", str(ROOT / "runtime/python/src"),
+                         *runtime_include_flags(root), "-I", str(ROOT / "runtime/python/src"),
                          "-isystem", pybind11.get_include(), "-isystem", sysconfig.get_paths()["include"],
                          str(binding)], capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
