@@ -27,6 +27,9 @@ def copy_tree(dest: Path) -> Path:
     shutil.copy2(ROOT / "CMakeLists.txt", dest / "CMakeLists.txt")
     for part in ("runtime", "drivers", "hardware/electronics/firmware"):
         shutil.copytree(ROOT / part, dest / part, ignore=shutil.ignore_patterns("__pycache__", "corpus"))
+    # The firmware's CMake reads the board revision from its one source.
+    (dest / "hardware/electronics/generator").mkdir(parents=True)
+    shutil.copy2(ROOT / "hardware/electronics/generator/design.py", dest / "hardware/electronics/generator")
     return dest
 
 
