@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "robogene/name_client.hpp"
 
+#include <chrono>
 #include <sstream>
 
 #include "robogene/error.hpp"
@@ -12,7 +13,11 @@ namespace robogene {
 
 namespace {
 const std::string kEnd = "*** end of message";
-}
+// A name server's answer is a few lines (a `list` of thousands of ports is a few MB). A peer that
+// only pretends to be one must not make a client grow, or wait, without end.
+constexpr std::size_t kMaxReplyBytes = 16u << 20;
+constexpr int kReplyTimeouts = 4;  // the whole answer must arrive within this many read timeouts
+}  // namespace
 
 NameClient::NameClient(net::Endpoint server, net::Millis timeout)
     : server_(std::move(server)), timeout_(timeout) {}
@@ -31,10 +36,19 @@ std::vector<std::string> NameClient::request(const std::string& line) {
   s.write_all(line.data(), line.size());
   net::StreamReader r(s);
   std::vector<std::string> lines;
+  std::size_t total = 0;
+  const auto deadline = std::chrono::steady_clock::now() + kReplyTimeouts * timeout_;
   for (;;) {
     if (!r.wait_for_data()) break;  // a server may simply close after its answer
     std::string l = r.read_line(1u << 20);
     if (l == kEnd) break;
+    total += l.size() + 1;
+    if (total > kMaxReplyBytes)
+      throw NetworkError("name server at " + server_.to_string() + ": answer longer than " +
+                         std::to_string(kMaxReplyBytes) + " bytes without \"" + kEnd + "\"");
+    if (std::chrono::steady_clock::now() > deadline)
+      throw NetworkError("name server at " + server_.to_string() + ": answer not complete after " +
+                         std::to_string(kReplyTimeouts * timeout_.count()) + " ms");
     lines.push_back(std::move(l));
   }
   return lines;
