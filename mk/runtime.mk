@@ -5,6 +5,10 @@
 
 CMAKE_BUILD_TYPE ?= RelWithDebInfo
 RUNTIME_SOURCES := $(shell find runtime -type f -not -path '*/__pycache__/*' 2>/dev/null) CMakeLists.txt pyproject.toml
+# The extension links the device layer's drivers and the boards' control core (the CAN simulator), so their
+# sources are the extension's too.
+PYTHON_SOURCES := $(RUNTIME_SOURCES) \
+	$(shell find drivers hardware/electronics/firmware -type f -not -path '*/__pycache__/*' 2>/dev/null)
 
 $(BUILD)/build.ninja: CMakeLists.txt runtime/CMakeLists.txt runtime/layers.cmake $(STAMPS)/apt-runtime
 	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=$(CMAKE_BUILD_TYPE)
@@ -14,10 +18,12 @@ runtime: $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
 # The extension is built by scikit-build-core from the same CMake project (build dir kept under
-# build/python so rebuilds are incremental) and installed into .venv.
-$(STAMPS)/python: $(RUNTIME_SOURCES) $(VENV)/.stamp | $(STAMPS)
+# build/python so rebuilds are incremental) and installed into .venv. The stamp takes the time the build
+# started, so a source edited while it runs is newer than the stamp and rebuilds next time.
+$(STAMPS)/python: $(PYTHON_SOURCES) $(VENV)/.stamp | $(STAMPS)
+	touch $@.started
 	$(PY) -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps .
-	touch $@
+	mv $@.started $@
 python: $(STAMPS)/python
 
 # The committed type stub of robogene._core, regenerated from the built module (docs/python.md); the
