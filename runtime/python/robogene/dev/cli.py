@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`python -m robogene.dev`, the Python `robogene dev` (the paper's yarpdev): builds a device
 configuration from --from FILE.ini and the command line (`--key value`, later wins), opens the
-device with the factory (the C++ drivers and any Python device a program added) and serves it with
-the C++ servers until SIGINT / SIGTERM, then closes it, unregistering its ports. A device that is
+device with the factory (the C++ drivers, and the Python devices of a program that calls run()
+after adding them) and serves it with the C++ servers until SIGINT / SIGTERM, then closes it, unregistering its ports. A device that is
 not itself a server is wrapped by the one that fits it (wrapper_for), as yarpdev does.
 
     python -m robogene.dev --device test_motor --name /motors
