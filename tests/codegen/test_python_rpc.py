@@ -305,3 +305,57 @@ def test_grabber_server_answers_a_set_as_yarp_3_12_3():
     assert client.check_server(False) == [] and sent == []
     assert [name for name, _ in client.check_server(True)] == ["IFrameGrabberImage", "IFrameGrabberControls"]
     assert sent == ["[get] [rgif]"]
+
+
+def test_a_failing_transport_fails_the_call_and_is_reported(monkeypatch):
+    """A transport that raises, returns no Bottle, or says None (the exchange failed): the client's
+    call answers as for a failed request (None, False), the exception goes to sys.unraisablehook
+    naming the transport, and nothing is sent twice."""
+    import sys
+    reported = []
+    monkeypatch.setattr(sys, "unraisablehook", lambda info: reported.append(info))
+    calls = []
+
+    def raising(request):
+        calls.append(request.to_text())
+        raise OSError("link down")
+    client = ControlboardClient(raising)
+    assert client.getAxes() is None and client.positionMove(0, 1.0) is False
+    assert calls == ["[get] [axes]", "[set] [pos] 0 1.0"]
+    assert [type(r.exc_value) for r in reported] == [OSError, OSError]
+    assert reported[0].object == "robogene client transport"
+
+    reported.clear()
+    assert ControlboardClient(lambda request: "[ok]").positionMove(0, 1.0) is False
+    assert [type(r.exc_value) for r in reported] == [TypeError]
+    assert "must return a Bottle or None, got str" in str(reported[0].exc_value)
+
+    reported.clear()
+    assert ControlboardClient(lambda request: None).getAxes() is None and reported == []
+    with pytest.raises(TypeError, match="transport"):
+        ControlboardClient("/motors/rpc:i")
+
+
+class TwoAxes(DeviceDriver, IEncoders):
+    """A device in Python with only IEncoders' axes."""
+
+    def open(self, config):
+        return True
+
+    def close(self):
+        return True
+
+    def getAxes(self):
+        return 2
+
+
+def test_a_server_keeps_its_device_alive_and_answers_for_a_python_one():
+    import gc
+    server = ControlboardServer(PolyDriver(Property.from_dict({"device": "test_motor", "axes": 3})).view(DeviceDriver))
+    gc.collect()  # the PolyDriver lives on in the view the server holds
+    assert server.respond(Bottle.from_text("[get] [axes]")).to_text().startswith("[is] [axes] 3 [tsta] ")
+    python = ControlboardServer(TwoAxes())
+    gc.collect()
+    assert python.interfaces() == [("IEncoders", IEncoders.FINGERPRINT)]
+    assert python.respond(Bottle.from_text("[get] [axes]")).to_text().startswith("[is] [axes] 2 [tsta] ")
+    assert python.respond(Bottle.from_text("[set] [pos] 0 1.0")).to_text() == "[fail]"  # no IPositionControl
