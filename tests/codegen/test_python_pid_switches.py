@@ -1,18 +1,17 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""YARP 3's PID offset, enable, disable and reset requests over RPC against the Python test_motor:
-the replies in the shapes of RPCMessagesParser::handlePidMsg, and the model's behaviour through the
-generated client, bytes and the table-driven server. The C++ twin is
+"""YARP 3's PID offset, enable, disable and reset requests over RPC against test_motor opened from
+Python: the replies in the shapes of RPCMessagesParser::handlePidMsg, and the model's behaviour
+through the generated client, bytes and the generated server dispatch, both bound from C++
+(robogene.dev.ControlboardClient, ControlboardServer). The C++ test is
 drivers/fake/test/framework/pid_switches_rpc_test.cpp."""
 import math
 
 import pytest
 
 from robogene import Bottle
-from robogene.dev import ControlMode, PolyDriver, Property
-from robogene.dev.generated import Pid, PidType
-from robogene.dev.generated.clients import ControlboardClient
-from robogene.dev.rpc import RpcServer
+from robogene.dev import (ControlboardClient, ControlboardServer, ControlMode, DeviceDriver, ISimulationClock, Pid,
+                          PidType, PolyDriver, Property)
 
 
 @pytest.fixture
@@ -20,10 +19,10 @@ def remote():
     """A three-axis test_motor on a manual clock, its server, and a client through bytes."""
     device = PolyDriver(Property.from_dict({"device": "test_motor", "axes": 3, "clock": "manual"}))
     assert device.is_valid(), device.last_error
-    server = RpcServer("controlboard", device._device)
+    server = ControlboardServer(device.view(DeviceDriver))
     client = ControlboardClient(lambda request: Bottle.from_bytes(
         server.respond(Bottle.from_bytes(request.to_bytes())).to_bytes()))
-    yield device._device, server, client
+    yield device.view(ISimulationClock), server, client
     device.close()
 
 

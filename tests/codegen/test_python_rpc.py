@@ -1,8 +1,9 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""Python RPC: the table-driven server replays a real YARP 3 `yarp rpc` session byte for byte
-(the same capture as the C++ test, rpc_motors.flows.txt), and the generated client drives a
-device through bytes and the server. Needs the compiled core (`make python`)."""
+"""RPC from Python: the generated server dispatch, bound from C++ (robogene.dev.ControlboardServer),
+replays a real YARP 3 `yarp rpc` session byte for byte (the same capture as the C++ test,
+rpc_motors.flows.txt), and the generated client (ControlboardClient, over a Python transport)
+drives a device through bytes and the server. Needs the compiled core (`make python`)."""
 import math
 import struct
 import time
@@ -10,10 +11,9 @@ import time
 import pytest
 
 from robogene import Bottle, Error
-from robogene.dev import ControlMode, IPositionControl, IVelocityControl, PolyDriver, Property
-from robogene.dev.generated import Pid, PidType
-from robogene.dev.generated.clients import ControlboardClient
-from robogene.dev.rpc import RpcServer
+from robogene.dev import (CameraFeature, ControlboardClient, ControlboardServer, ControlMode, DeviceDriver,
+                          FeatureMode, GrabberClient, GrabberServer, IEncoders, IPositionControl, ISimulationClock,
+                          IVelocityControl, Pid, PidType, PolyDriver, Property)
 
 # (typed at yarp rpc, request bytes, reply bytes) from the capture; see the C++ twin
 # drivers/fake/test/framework/controlboard_server_test.cpp for the one deliberate difference ([vel] modes).
@@ -51,7 +51,7 @@ SESSION = [
 def board(axes=4):
     device = PolyDriver(Property.from_dict({"device": "test_motor", "axes": axes, "clock": "manual"}))
     assert device.is_valid(), device.last_error
-    return device, RpcServer("controlboard", device._device)
+    return device, ControlboardServer(device.view(DeviceDriver))
 
 
 def test_server_replays_the_captured_yarp_session_byte_for_byte():
@@ -115,7 +115,7 @@ def test_paper_section_3_3_through_client_bytes_and_server():
     assert isinstance(ipos, IPositionControl) and isinstance(ivel, IVelocityControl)
     assert ipos.setRefAcceleration(0, 100) and ipos.setRefSpeed(0, 5) and ipos.positionMove(0, 40)
     assert ivel.setRefAcceleration(1, 100) and ivel.velocityMove(1, 5)
-    assert device._device.advance(4.0)
+    assert device.view(ISimulationClock).advance(4.0)
     encs = client.getEncoders()
     assert encs[0] == pytest.approx(0.125 + 5 * 3.95, abs=0.01)
     assert encs[1] == pytest.approx(0.125 + 5 * 3.95, abs=0.01)
@@ -151,7 +151,7 @@ def test_torque_control_and_pids_through_client_bytes_and_server():
     client = client_for(server)
     assert client.setRefTorque(0, 0.5)
     assert client.getControlMode(0) == ControlMode.TORQUE
-    assert device._device.advance(1.0)  # 50 time constants of J/b = 0.02 s
+    assert device.view(ISimulationClock).advance(1.0)  # 50 time constants of J/b = 0.02 s
     assert client.getTorque(0) == 0.5 and client.getRefTorque(0) == 0.5
     terminal = 0.5 / 0.5 * 180.0 / math.pi  # t / b, deg/s
     assert client.getEncoderSpeed(0) == pytest.approx(terminal, abs=1e-9)
@@ -162,7 +162,7 @@ def test_torque_control_and_pids_through_client_bytes_and_server():
     assert client.getRefTorques() == [0.5, 0.0, 0.0]
 
     assert client.setRefAcceleration(1, 100.0) and client.velocityMove(1, 10.0)
-    assert device._device.advance(1.0)
+    assert device.view(ISimulationClock).advance(1.0)
     torque = client.getTorque(1)
     assert torque == pytest.approx(0.5 * 10.0 * math.pi / 180.0, abs=1e-12)  # b w
     assert client.getPidOutput(PidType.VELOCITY, 1) == torque
@@ -185,7 +185,7 @@ def test_torque_control_and_pids_through_client_bytes_and_server():
 
     assert client.positionMove(2, 20.0)
     assert client.getPidError(PidType.POSITION, 2) == 20.0
-    assert device._device.advance(10.0)
+    assert device.view(ISimulationClock).advance(10.0)
     assert (client.getPidReference(PidType.POSITION, 2), client.getPidError(PidType.POSITION, 2)) == (20.0, 0.0)
     assert client.setPidReference(PidType.POSITION, 2, 5.0) is False
 
@@ -257,11 +257,11 @@ def test_command_port_carries_streamed_moves():
 
 def test_stream_messages_match_yarp():
     device, server = board()
-    assert device._device.setEncoders([1.0, 2.0, 3.0, 4.0])
-    assert server.publish("state").to_bytes().hex() == (
+    assert device.view(IEncoders).setEncoders([1.0, 2.0, 3.0, 4.0])
+    assert server.publish_state().to_bytes().hex() == (
         "0a01000004000000000000000000f03f000000000000004000000000000008400000000000001040")
     cam = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 640, "height": 480, "clock": "manual"}))
-    message = RpcServer("grabber", cam._device).publish("image").to_bytes()
+    message = GrabberServer(cam.view(DeviceDriver)).publish_image().to_bytes()
     assert len(message) == 60 + 921600
     # The 60-byte header of a captured YARP 3 frame (sniff_image.txt).
     assert message[:60].hex() == ("0001000004000000090000006d61740009000000726762000101000005000000"
@@ -272,8 +272,6 @@ def test_grabber_client_reads_every_form_of_a_set_reply():
     """YARP 3.12.3's [fgc] [set] <int32> says whether the set was done; Robogene's servers before it
     answered success with an empty bottle; YARP 3.5's answer [nak] to every set, and 3.12.3's to one
     they cannot parse (docs/interop.md)."""
-    from robogene.dev.generated import CameraFeature, FeatureMode
-    from robogene.dev.generated.clients import GrabberClient
     sent, replies = [], []
 
     def transport(request):
@@ -292,10 +290,8 @@ def test_grabber_client_reads_every_form_of_a_set_reply():
 
 
 def test_grabber_server_answers_a_set_as_yarp_3_12_3():
-    from robogene.dev.generated import IFrameGrabberControls
-    from robogene.dev.generated.clients import GrabberClient
     device = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 8, "height": 4, "clock": "manual"}))
-    server = RpcServer("grabber", device.view(IFrameGrabberControls))
+    server = GrabberServer(device.view(DeviceDriver))
     ask = lambda text: server.respond(Bottle.from_text(text)).to_text()
     assert ask("[fgc] [set] [feat] 7 0.25") == "[fgc] [set] 1"
     assert ask("fgc set feat 7 0.5") == "[fgc] [set] 1"      # in vocabs, as YARP answers
@@ -309,3 +305,57 @@ def test_grabber_server_answers_a_set_as_yarp_3_12_3():
     assert client.check_server(False) == [] and sent == []
     assert [name for name, _ in client.check_server(True)] == ["IFrameGrabberImage", "IFrameGrabberControls"]
     assert sent == ["[get] [rgif]"]
+
+
+def test_a_failing_transport_fails_the_call_and_is_reported(monkeypatch):
+    """A transport that raises, returns no Bottle, or says None (the exchange failed): the client's
+    call answers as for a failed request (None, False), the exception goes to sys.unraisablehook
+    naming the transport, and nothing is sent twice."""
+    import sys
+    reported = []
+    monkeypatch.setattr(sys, "unraisablehook", lambda info: reported.append(info))
+    calls = []
+
+    def raising(request):
+        calls.append(request.to_text())
+        raise OSError("link down")
+    client = ControlboardClient(raising)
+    assert client.getAxes() is None and client.positionMove(0, 1.0) is False
+    assert calls == ["[get] [axes]", "[set] [pos] 0 1.0"]
+    assert [type(r.exc_value) for r in reported] == [OSError, OSError]
+    assert reported[0].object == "robogene client transport"
+
+    reported.clear()
+    assert ControlboardClient(lambda request: "[ok]").positionMove(0, 1.0) is False
+    assert [type(r.exc_value) for r in reported] == [TypeError]
+    assert "must return a Bottle or None, got str" in str(reported[0].exc_value)
+
+    reported.clear()
+    assert ControlboardClient(lambda request: None).getAxes() is None and reported == []
+    with pytest.raises(TypeError, match="transport"):
+        ControlboardClient("/motors/rpc:i")
+
+
+class TwoAxes(DeviceDriver, IEncoders):
+    """A device in Python with only IEncoders' axes."""
+
+    def open(self, config):
+        return True
+
+    def close(self):
+        return True
+
+    def getAxes(self):
+        return 2
+
+
+def test_a_server_keeps_its_device_alive_and_answers_for_a_python_one():
+    import gc
+    server = ControlboardServer(PolyDriver(Property.from_dict({"device": "test_motor", "axes": 3})).view(DeviceDriver))
+    gc.collect()  # the PolyDriver lives on in the view the server holds
+    assert server.respond(Bottle.from_text("[get] [axes]")).to_text().startswith("[is] [axes] 3 [tsta] ")
+    python = ControlboardServer(TwoAxes())
+    gc.collect()
+    assert python.interfaces() == [("IEncoders", IEncoders.FINGERPRINT)]
+    assert python.respond(Bottle.from_text("[get] [axes]")).to_text().startswith("[is] [axes] 2 [tsta] ")
+    assert python.respond(Bottle.from_text("[set] [pos] 0 1.0")).to_text() == "[fail]"  # no IPositionControl

@@ -12,8 +12,7 @@ import pytest
 
 import interop_net as net_
 from interop_peer import robogene_bin
-from robogene.dev import IPidControl, PolyDriver, Property
-from robogene.dev.generated import PidType
+from robogene.dev import IPidControl, PidType, PolyDriver, Property
 
 pytestmark = pytest.mark.timeout(120)
 

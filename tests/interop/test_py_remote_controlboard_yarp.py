@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""The Python remote_controlboard (robogene.dev, imported by this test process) against YARP 3.5's
+"""remote_controlboard opened from Python (robogene.dev, in this test process) against YARP 3.5's
 control board server over fakeMotionControl: it reads the encoders from YARP's stateExt:o (udp)
 while that is fresh and by RPC once it is 0.5 s old, and sends velocityMove on YARP's command:i
 (YARP's server does not take it by RPC)."""
@@ -11,7 +11,10 @@ import pytest
 
 import robogene
 from robogene.dev import IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
-from robogene.dev.remote_controlboard import STATE_TIMEOUT
+
+# How old the last jointData may be before remote_controlboard reads by RPC (kStateTimeout in
+# runtime/src/dev/nws/remote_controlboard.cpp, YARP's rule).
+STATE_TIMEOUT = 0.5
 
 pytestmark = pytest.mark.timeout(120)
 

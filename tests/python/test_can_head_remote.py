@@ -19,8 +19,7 @@ import pytest
 import paper_program
 
 import robogene
-from robogene.dev import IControlMode, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
-from robogene.dev.generated.types import ControlMode
+from robogene.dev import ControlMode, IControlMode, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
 
 ROOT = Path(__file__).resolve().parents[2]
 HEAD_INI = ROOT / "drivers" / "can" / "generated" / "head.ini"

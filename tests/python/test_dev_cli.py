@@ -161,6 +161,7 @@ def test_subdevice_given_on_the_command_line(name_server, procs, robogene_bin, y
     (("--device", "test_motor", "--name", "/x", "--axes", "100"), r"axes.*100"),
     (("--device", "test_motor", "--name", "/x", "--period", "-1"), r"period"),
     (("--from", "/nonexistent/motor.ini"), r"/nonexistent/motor.ini"),
+    (("--from",), r"key 'from': expected a word or a \"string\", got true"),  # not the file "1"
     (("--device", "controlBoard_nws_yarp", "--subdevice", "dragonfly", "--name", "/x"),
      r"unknown device 'dragonfly'"),
     (("--device", "controlBoard_nws_yarp", "--subdevice", "fake_grabber", "--name", "/x"),

@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """Devices across languages on real ports: the paper's section 3.3 in Python through a C++
-`robogene dev` server, and a test_motor written in Python served by robogene.dev.network and
-driven by the C++ section 3.3 program (remote_controlboard)."""
+`robogene dev` server, and a test_motor opened in this Python process, served by the bound
+ControlboardNws and driven by the C++ section 3.3 program (remote_controlboard) in another one."""
 from __future__ import annotations
 
 import time
@@ -13,7 +13,7 @@ import paper_program
 
 from robogene import Bottle, Network, RpcClient
 from robogene.dev import DeviceDriver, IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
-from robogene.dev.network import ControlboardNws
+from robogene.dev import ControlboardNws
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -54,14 +54,15 @@ def test_remote_controlboard_in_python_reports_an_absent_server(name_server):
     assert "/nobody/rpc:i" in device.last_error
 
 
-def test_a_python_device_served_to_the_cpp_section_3_3_program(name_server, robogene_bin, yarp_env):
+def test_a_device_served_from_python_to_the_cpp_section_3_3_program(name_server, robogene_bin, yarp_env):
     network = Network(name_server.address)
     with PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2})) as motor:
-        with ControlboardNws(motor.view(DeviceDriver), "/pymotors", network=network) as server:
+        with ControlboardNws(motor.view(DeviceDriver), Property.from_dict({"name": "/pymotors",
+                                                                            "server": name_server.address})) as server:
             assert server.port_names() == ["/pymotors/rpc:i", "/pymotors/command:i", "/pymotors/state:o",
                                            "/pymotors/stateExt:o"]
             paper_program.run_against(robogene_bin, yarp_env, "/pymotors", 1)
-            # The velocity move came on the command port (udp), the rest by RPC: the Python device has them.
+            # The velocity move came on the command port (udp), the rest by RPC: the device served from Python has them.
             with RpcClient(server="/pymotors/rpc:i", network=network) as client:
                 reply = client.call(Bottle.from_text("[get] [vmo] 1"))
                 assert reply.to_text().startswith("[is] [vmo] 5.0 [tsta] ")

@@ -1,9 +1,9 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""Cameras across languages on real ports: a fake_grabber written in Python served by
-robogene.dev.grabber_network.GrabberNws and read by the C++ tools (`robogene read`, the C++
-remote_grabber inside `robogene dev`) and by the Python remote_grabber, which also reads the C++
-camera server; and the Python image decoder's refusals."""
+"""Cameras across languages on real ports: a fake_grabber opened in this Python process, served
+by the bound GrabberNws and read by the C++ tools (`robogene read`, remote_grabber inside
+`robogene dev`) and by remote_grabber opened from Python, which also reads the `robogene dev`
+camera server; and the image decoder's refusals (robogene.dev.decode_image, the C++ codec)."""
 from __future__ import annotations
 
 import re
@@ -12,10 +12,10 @@ import time
 import pytest
 
 from robogene import Bottle, Network, Value, vocab
-from robogene.dev import (CameraFeature, DeviceDriver, FeatureMode, IFrameGrabberControls,
-                          IFrameGrabberImage, ImageRgb, PolyDriver, Property)
-from robogene.dev.grabber_network import GrabberNws, RemoteGrabber
-from robogene.dev.rpc import ImageError, decode_image, encode_image
+from robogene import Error
+from robogene.dev import (CameraFeature, DeviceDriver, FeatureMode, GrabberNws, IFrameGrabberControls,
+                          IFrameGrabberImage, ImageError, ImageRgb, PolyDriver, Property, RemoteGrabber, decode_image,
+                          encode_image)
 
 pytestmark = pytest.mark.timeout(90)
 
@@ -45,7 +45,7 @@ def check_stream(device: PolyDriver, width: int, height: int) -> float:
     previous = None
     for _ in range(3):
         image = frames.getImage()
-        assert image is not None, device.view(RemoteGrabber).last_error
+        assert image is not None, "no frame within the remote_grabber's timeout"
         assert (image.width, image.height) == (width, height)
         n = pattern_frame(image)
         assert n != previous, "the frames do not move on"
@@ -75,6 +75,10 @@ def check_controls(controls: IFrameGrabberControls) -> None:
     assert controls.getFeature(CameraFeature.FOCUS) is None
 
 
+def served(name_server, name: str) -> Property:
+    return Property.from_dict({"name": name, "server": name_server.address})
+
+
 def python_camera(width: int, height: int, rate: float = RATE) -> PolyDriver:
     camera = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": width, "height": height,
                                             "framerate": rate}))
@@ -92,7 +96,7 @@ def remote(name_server, remote_name: str, local: str) -> PolyDriver:
 def test_a_python_camera_read_by_the_python_remote_grabber(name_server):
     network = Network(name_server.address)
     with python_camera(640, 480) as camera:
-        with GrabberNws(camera.view(DeviceDriver), "/pycam", network=network) as server:
+        with GrabberNws(camera.view(DeviceDriver), served(name_server, "/pycam")) as server:
             assert server.port_names() == ["/pycam/rpc", "/pycam"]
             with remote(name_server, "/pycam", "/viewer") as device:
                 rate = check_stream(device, 640, 480)
@@ -109,7 +113,7 @@ def test_a_python_camera_answers_on_both_ports_as_yarp_3(name_server):
     ports say they are Robogene's (server_identity), in the reply to the admin [prop] [get]."""
     network = Network(name_server.address)
     with python_camera(64, 48) as camera:
-        with GrabberNws(camera.view(DeviceDriver), "/pycam", network=network):
+        with GrabberNws(camera.view(DeviceDriver), served(name_server, "/pycam")):
             for port in ("/pycam/rpc", "/pycam"):  # YARP's remote_grabber asks the image port
                 assert network.rpc(port, Bottle.from_text("[fgi] [get] [w]")).to_text() == "[fgi] [w] [is] 64"
                 assert network.rpc(port, Bottle.from_text("[fgc] [set] [feat] 7 0.25")).to_text() == "[fgc] [set] 1"
@@ -125,7 +129,7 @@ def test_cpp_tools_read_a_python_camera(name_server, procs, robogene_bin, yarp_e
     `robogene dev`, relays them (and the controls) to a Python client."""
     network = Network(name_server.address)
     with python_camera(8, 4) as small:
-        with GrabberNws(small.view(DeviceDriver), "/small", network=network):
+        with GrabberNws(small.view(DeviceDriver), served(name_server, "/small")):
             reader = procs.start("robogene read", [robogene_bin, "read", "/show", "/small", "--envelope"], yarp_env)
             reader.wait_for_line(r"\[mat\]")
             line = reader.lines_matching(r"\[mat\]")[0]
@@ -137,7 +141,7 @@ def test_cpp_tools_read_a_python_camera(name_server, procs, robogene_bin, yarp_e
             image = ImageRgb(8, 4, bytearray(b"".join(reversed(rows))))  # bit 16: bottom row first
             pattern_frame(image)
     with python_camera(640, 480) as camera:
-        with GrabberNws(camera.view(DeviceDriver), "/pycam", network=network):
+        with GrabberNws(camera.view(DeviceDriver), served(name_server, "/pycam")):
             relay = procs.start("robogene dev", [robogene_bin, "dev", "--device", "remote_grabber", "--remote", "/pycam",
                                                  "--local", "/relay", "--name", "/relay/cam"], yarp_env)
             relay.wait_for_line(r"serving on ", stream="err")
@@ -170,9 +174,9 @@ def test_the_python_remote_grabber_reports_an_absent_server(name_server):
 
 def test_the_python_camera_server_refuses_a_device_without_a_camera(name_server):
     with PolyDriver(Property.from_dict({"device": "test_motor", "axes": 1})) as motor:
-        with pytest.raises(ValueError, match="/x: the device to serve implements none of the interfaces of the "
-                                             "grabber service"):
-            GrabberNws(motor.view(DeviceDriver), "/x", network=Network(name_server.address))
+        with pytest.raises(Error, match="/x: the device to serve implements none of the interfaces of the "
+                                        "grabber service"):
+            GrabberNws(motor.view(DeviceDriver), served(name_server, "/x"))
     assert Network(name_server.address).query("/x") is None
 
 
@@ -206,7 +210,7 @@ def test_decode_image_refuses_a_malformed_image_with_its_reason(message, reason)
 def test_decode_image_reads_both_row_orders():
     image = ImageRgb()
     image.resize(5, 3)  # 15 bytes a row, padded to 16 on the wire
-    image.pixels[:] = bytes(range(45))
+    image.pixels = bytes(range(45))
     message = encode_image(image)
     assert message[2].to_text() == f"(3 48 {8 | 1 << 16} 5 3)"
     assert decode_image(message) == image

@@ -1,9 +1,9 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""The Python remote_controlboard reads the encoders (positions, speeds, accelerations) from the
-server's stateExt:o stream while it is fresh, as the C++ client does: by RPC only once the last
-jointData is 0.5 s old, or for a field the server flags [fail]; and sends velocityMove(j, v) on
-the command port. Against a Python test_motor served by ControlboardNws, against the C++
+"""remote_controlboard opened from Python reads the encoders (positions, speeds, accelerations)
+from the server's stateExt:o stream while it is fresh: by RPC only once the last jointData is
+0.5 s old, or for a field the server flags [fail]; and sends velocityMove(j, v) on the command
+port. Against a test_motor served by ControlboardNws in this process, against the C++
 `robogene dev`, and against a server of the test's own whose RPC requests are logged."""
 from __future__ import annotations
 
@@ -13,10 +13,12 @@ import time
 import pytest
 
 from robogene import Bottle, BufferedPort, Network, Port, RpcClient, RpcServer
-from robogene.dev import DeviceDriver, IEncoders, IVelocityControl, PolyDriver, Property
-from robogene.dev.network import ControlboardNws
-from robogene.dev.remote_controlboard import STATE_TIMEOUT
-from robogene.dev.rpc import RpcServer as Dispatch
+from robogene.dev import (ControlboardNws, ControlboardServer, DeviceDriver, IEncoders, ISimulationClock,
+                          IVelocityControl, PolyDriver, Property)
+
+# How old the last jointData may be before remote_controlboard reads by RPC (kStateTimeout in
+# runtime/src/dev/nws/remote_controlboard.cpp, YARP's rule).
+STATE_TIMEOUT = 0.5
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -45,11 +47,12 @@ def until(what: str, done, timeout: float = 5.0) -> None:
 def test_encoders_come_from_the_stream_until_it_is_half_a_second_old(name_server):
     network = Network(name_server.address)
     with PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2, "clock": "manual"})) as motor:
-        device = motor.view(DeviceDriver)
-        with ControlboardNws(device, "/pymotors", network=network), remote(name_server, "/pymotors") as client:
+        device, clock = motor.view(IEncoders), motor.view(ISimulationClock)
+        served = Property.from_dict({"name": "/pymotors", "server": name_server.address})
+        with ControlboardNws(motor.view(DeviceDriver), served), remote(name_server, "/pymotors") as client:
             enc = client.view(IEncoders)
             # Axis 1 mid-ramp (2.5 deg/s, 50 deg/s^2): the client soon reads what the device reads.
-            assert device.velocityMove(1, 5.0) and device.advance(0.05)
+            assert motor.view(IVelocityControl).velocityMove(1, 5.0) and clock.advance(0.05)
             streamed = readings(device)
             assert streamed[4] == pytest.approx(2.5) and streamed[5] == pytest.approx(50.0)
             until("the client to read the device", lambda: readings(enc) == streamed)
@@ -59,7 +62,7 @@ def test_encoders_come_from_the_stream_until_it_is_half_a_second_old(name_server
             # 0.5 s: these readings cannot have come by RPC.
             network.disconnect("/pymotors/stateExt:o", "/pyclient/stateExt:i")
             cut = time.monotonic()
-            assert device.advance(1.0)  # cruising at 5 deg/s, no acceleration
+            assert clock.advance(1.0)  # cruising at 5 deg/s, no acceleration
             moved = readings(device)
             assert moved != streamed
             assert readings(enc) == streamed
@@ -92,13 +95,14 @@ def test_encoders_from_the_cpp_server_stream(name_server, procs, robogene_bin, y
 
 
 class LoggedServer:
-    """A control board server of the test's own: RPC answered from a Python test_motor and logged,
-    a command port that records what it gets, and a stateExt:o the test writes by hand."""
+    """A control board server of the test's own: RPC answered by the generated dispatch over a
+    test_motor and logged, a command port that records what it gets, and a stateExt:o the test
+    writes by hand."""
 
     def __init__(self, network: Network):
         self.motor = PolyDriver(Property.from_dict({"device": "test_motor", "axes": 2, "clock": "manual"}))
-        self.device = self.motor.view(DeviceDriver)
-        dispatch = Dispatch("controlboard", self.device)
+        self.device = self.motor.view(IEncoders)
+        dispatch = ControlboardServer(self.motor.view(DeviceDriver))
         self.requests, self.commands = [], []
         self.lock = threading.Lock()
 
@@ -175,7 +179,7 @@ def test_velocity_moves_go_on_the_command_port(name_server, fake):
         ivel = client.view(IVelocityControl)
         assert ivel.velocityMove(1, 2.5)
         until("the command", lambda: fake.commands == ["([vmo] 1) (2.5)"])
-        assert fake.device.getRefVelocity(1) == 2.5
+        assert fake.motor.view(IVelocityControl).getRefVelocity(1) == 2.5
         assert fake.asked("[vmo]") == []  # not by RPC
         assert not ivel.velocityMove(2, 1.0)  # no axis 2
         assert not ivel.velocityMove(0, float("nan"))

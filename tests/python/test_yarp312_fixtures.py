@@ -15,13 +15,12 @@ import time
 import pytest
 
 from robogene import Bottle, Network, decode_joint_data, vocab
-from robogene.dev import DeviceDriver, PolyDriver, Property
-from robogene.dev.generated import CameraFeature, ControlMode, FeatureMode, Pid, PidType
-from robogene.dev.generated.clients import ControlboardClient, GrabberClient
-from robogene.dev.generated.wire import INTERFACES, SERVICES, STRUCTS
-from robogene.dev.rpc import RpcServer
+from robogene.dev import (CameraFeature, ControlboardClient, ControlboardServer, ControlMode, DeviceDriver,
+                          FeatureMode, GrabberClient, GrabberServer, IEncoders, IFrameGrabberControls, Pid, PidType,
+                          PolyDriver, Property)
 
 import yarp312
+from idl_wire import INTERFACES, SERVICES, STRUCTS
 
 pytestmark = pytest.mark.timeout(120)
 
@@ -118,12 +117,12 @@ def compare_with_yarp(name: str, ask) -> tuple[int, dict]:
 
 
 def python_server(service: str):
+    """A device opened from Python and the generated server dispatch over it, without ports."""
     if service == "controlboard":
         device = PolyDriver(Property.from_dict({"device": "test_motor", "axes": 4, "clock": "manual"}))
-    else:
-        device = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 8, "height": 4,
-                                                "clock": "manual"}))
-    return device, RpcServer(service, device.view(DeviceDriver))
+        return device, ControlboardServer(device.view(DeviceDriver))
+    device = PolyDriver(Property.from_dict({"device": "fake_grabber", "width": 8, "height": 4, "clock": "manual"}))
+    return device, GrabberServer(device.view(DeviceDriver))
 
 
 @pytest.mark.parametrize("name,service", [("controlboard_rpc.txt", "controlboard"),
@@ -245,7 +244,7 @@ def test_our_python_clients_send_yarps_bytes_and_read_its_replies(service, clien
     assert "[get] [rgif]" not in replay.sent
     called = 0
     for iface in SERVICES[service][1]:
-        for method, (wire, _, args, results, _) in INTERFACES[iface][1].items():
+        for method, (wire, args, results) in INTERFACES[iface][1].items():
             if wire is None:
                 continue
             got = getattr(client, method)(*[example(a) for a in args])
@@ -400,8 +399,7 @@ def test_our_remote_controlboard_still_asks_our_server_for_fingerprints(name_ser
 
 
 def test_our_python_clients_never_ask_a_yarp_3_12_server_for_fingerprints(name_server):
-    """The Python remote_controlboard and remote_grabber against servers replaying YARP 3.12.3."""
-    from robogene.dev.generated import IEncoders, IFrameGrabberControls
+    """remote_controlboard and remote_grabber, opened from Python, against servers replaying YARP 3.12.3."""
     network = Network(name_server.address)
     joints = recorded_stream("streams.txt", "/stateExt:o")
     motors = replay_server(network, "/y312py", ["/rpc:i", "/command:i", "/stateExt:o"],

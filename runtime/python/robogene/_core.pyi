@@ -10,7 +10,7 @@ import collections.abc
 import enum
 import typing
 import typing_extensions
-__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'CameraFeature', 'ConfigError', 'Contact', 'ControlMode', 'ControlboardNws', 'DeviceDriver', 'DriverFactory', 'Error', 'FeatureMode', 'GrabberNws', 'IControlMode', 'IEncoders', 'IFrameGrabberControls', 'IFrameGrabberImage', 'INetworkWrapper', 'IPidControl', 'IPositionControl', 'ISimulationClock', 'ITorqueControl', 'IVelocityControl', 'ImageRgb', 'JointData', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Pid', 'PidType', 'PolyDriver', 'Port', 'Property', 'RpcClient', 'RpcServer', 'Searchable', 'Stamp', 'Value', 'decode_joint_data', 'vocab', 'vocab_to_string', 'wrapper_for']
+__all__: list[str] = ['Bottle', 'BufferPolicy', 'BufferedPort', 'CameraFeature', 'ConfigError', 'Contact', 'ControlMode', 'ControlboardClient', 'ControlboardNws', 'ControlboardServer', 'DeviceDriver', 'DriverFactory', 'Error', 'FeatureMode', 'GrabberClient', 'GrabberNws', 'GrabberServer', 'IControlMode', 'IEncoders', 'IFrameGrabberControls', 'IFrameGrabberImage', 'INetworkWrapper', 'IPidControl', 'IPositionControl', 'ISimulationClock', 'ITorqueControl', 'IVelocityControl', 'ImageError', 'ImageRgb', 'JointData', 'MessageInfo', 'NameConfig', 'Network', 'NetworkError', 'ParseError', 'Pid', 'PidType', 'PolyDriver', 'Port', 'Property', 'RemoteGrabber', 'RpcClient', 'RpcServer', 'Searchable', 'Stamp', 'Value', 'decode_image', 'decode_joint_data', 'encode_image', 'encode_joint_data', 'vocab', 'vocab_to_string', 'wrapper_for']
 class Error(RuntimeError):
     pass
 class ParseError(Error):
@@ -664,72 +664,6 @@ class RpcServer:
         """
         Names of the ports this one sends to.
         """
-class JointData:
-    """
-    A decoded jointData message (YARP 3's stateExt:o): each field is one value per axis, or None when the server flagged it [fail].
-    """
-    def __repr__(self) -> str:
-        ...
-    @property
-    def acceleration(self) -> list[float] | None:
-        """
-        Joint accelerations, deg/s^2.
-        """
-    @property
-    def axes(self) -> int:
-        """
-        The number of axes (values in every field).
-        """
-    @property
-    def control_mode(self) -> list[int] | None:
-        """
-        Control modes, as vocab codes (ControlMode values).
-        """
-    @property
-    def current(self) -> list[float] | None:
-        """
-        Motor currents.
-        """
-    @property
-    def interaction_mode(self) -> list[int] | None:
-        """
-        Interaction modes, as vocab codes.
-        """
-    @property
-    def motor_acceleration(self) -> list[float] | None:
-        """
-        Motor accelerations, deg/s^2.
-        """
-    @property
-    def motor_position(self) -> list[float] | None:
-        """
-        Motor positions, deg.
-        """
-    @property
-    def motor_velocity(self) -> list[float] | None:
-        """
-        Motor speeds, deg/s.
-        """
-    @property
-    def position(self) -> list[float] | None:
-        """
-        Joint positions, deg.
-        """
-    @property
-    def pwm(self) -> list[float] | None:
-        """
-        PWM duty cycles.
-        """
-    @property
-    def torque(self) -> list[float] | None:
-        """
-        Joint torques, N m.
-        """
-    @property
-    def velocity(self) -> list[float] | None:
-        """
-        Joint speeds, deg/s.
-        """
 class Searchable:
     """
     Read access to a device configuration. Typed reads raise ConfigError naming where a bad value came from.
@@ -813,7 +747,14 @@ class ImageRgb:
     """
     An RGB image: width x height pixels of 3 bytes, top row first.
     """
-    def __init__(self, width: typing.SupportsInt | typing.SupportsIndex = 0, height: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    __hash__: typing.ClassVar[None] = None
+    def __eq__(self, arg0: ImageRgb) -> bool:
+        ...
+    def __init__(self, width: typing.SupportsInt | typing.SupportsIndex = 0, height: typing.SupportsInt | typing.SupportsIndex = 0, pixels: typing.Any | None = None) -> None:
+        """
+        A black image, or one of `pixels` (width x height x 3 bytes, top row first).
+        """
+    def __repr__(self) -> str:
         ...
     def pixel(self, x: typing.SupportsInt | typing.SupportsIndex, y: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int, int]:
         ...
@@ -835,6 +776,8 @@ class ImageRgb:
     @property
     def width(self) -> int:
         ...
+class ImageError(ValueError):
+    pass
 class CameraFeature(enum.IntEnum):
     """
     A setting of a camera that IFrameGrabberControls can read or change.
@@ -1051,7 +994,7 @@ class IControlMode:
     VERSION: typing.ClassVar[int] = 1
     def __init__(self) -> None:
         ...
-    def getControlMode(self, j: typing.SupportsInt | typing.SupportsIndex) -> ControlMode | None:
+    def getControlMode(self, j: int) -> ControlMode | None:
         """
         The control mode of one axis.
         """
@@ -1059,7 +1002,7 @@ class IControlMode:
         """
         The control mode of every axis.
         """
-    def setControlMode(self, j: typing.SupportsInt | typing.SupportsIndex, mode: ControlMode) -> bool:
+    def setControlMode(self, j: int, mode: ControlMode) -> bool:
         """
         Switch one axis to a control mode.
         """
@@ -1080,11 +1023,11 @@ class IEncoders:
         """
         The number of axes the board controls.
         """
-    def getEncoder(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getEncoder(self, j: int) -> float | None:
         """
         The measured position of one axis.
         """
-    def getEncoderAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getEncoderAcceleration(self, j: int) -> float | None:
         """
         The measured acceleration of one axis.
         """
@@ -1092,7 +1035,7 @@ class IEncoders:
         """
         The measured accelerations of all axes.
         """
-    def getEncoderSpeed(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getEncoderSpeed(self, j: int) -> float | None:
         """
         The measured speed of one axis.
         """
@@ -1104,7 +1047,7 @@ class IEncoders:
         """
         The measured positions of all axes.
         """
-    def resetEncoder(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def resetEncoder(self, j: int) -> bool:
         """
         Make the current position of one axis read as zero.
         """
@@ -1112,7 +1055,7 @@ class IEncoders:
         """
         Make the current positions of all axes read as zero.
         """
-    def setEncoder(self, j: typing.SupportsInt | typing.SupportsIndex, val: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setEncoder(self, j: int, val: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Make the current position of one axis read as the given value.
         """
@@ -1187,23 +1130,23 @@ class IPidControl:
     VERSION: typing.ClassVar[int] = 1
     def __init__(self) -> None:
         ...
-    def disablePid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def disablePid(self, pidtype: PidType, j: int) -> bool:
         """
         Switch one controller off, so that it no longer drives its axis.
         """
-    def enablePid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def enablePid(self, pidtype: PidType, j: int) -> bool:
         """
         Switch one controller on.
         """
-    def getPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> Pid | None:
+    def getPid(self, pidtype: PidType, j: int) -> Pid | None:
         """
         The gains of one controller of one axis.
         """
-    def getPidError(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getPidError(self, pidtype: PidType, j: int) -> float | None:
         """
         The current error of one controller.
         """
-    def getPidErrorLimit(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getPidErrorLimit(self, pidtype: PidType, j: int) -> float | None:
         """
         The largest error one controller tolerates.
         """
@@ -1215,7 +1158,7 @@ class IPidControl:
         """
         The current errors of one controller of every axis.
         """
-    def getPidOutput(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getPidOutput(self, pidtype: PidType, j: int) -> float | None:
         """
         The current output of one controller (for example a PWM value).
         """
@@ -1223,7 +1166,7 @@ class IPidControl:
         """
         The current outputs of one controller of every axis.
         """
-    def getPidReference(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getPidReference(self, pidtype: PidType, j: int) -> float | None:
         """
         The reference one controller is following.
         """
@@ -1235,19 +1178,19 @@ class IPidControl:
         """
         The gains of one controller of every axis.
         """
-    def isPidEnabled(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool | None:
+    def isPidEnabled(self, pidtype: PidType, j: int) -> bool | None:
         """
         Whether one controller is switched on.
         """
-    def resetPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def resetPid(self, pidtype: PidType, j: int) -> bool:
         """
         Reset one controller, usually making what it measures its reference and clearing its integral.
         """
-    def setPid(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, pid: Pid) -> bool:
+    def setPid(self, pidtype: PidType, j: int, pid: Pid) -> bool:
         """
         Replace the gains of one controller of one axis.
         """
-    def setPidErrorLimit(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, limit: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setPidErrorLimit(self, pidtype: PidType, j: int, limit: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         The largest error one controller tolerates.
         """
@@ -1255,11 +1198,11 @@ class IPidControl:
         """
         The largest errors one controller of each axis tolerates.
         """
-    def setPidOffset(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, v: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setPidOffset(self, pidtype: PidType, j: int, v: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Set the value added to one controller's output (the offset of its gains).
         """
-    def setPidReference(self, pidtype: PidType, j: typing.SupportsInt | typing.SupportsIndex, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setPidReference(self, pidtype: PidType, j: int, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Drive one controller directly with a reference; this bypasses trajectory generation.
         """
@@ -1280,7 +1223,7 @@ class IPositionControl:
     VERSION: typing.ClassVar[int] = 1
     def __init__(self) -> None:
         ...
-    def checkMotionDone(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool | None:
+    def checkMotionDone(self, j: int) -> bool | None:
         """
         Whether one axis has reached its target.
         """
@@ -1292,7 +1235,7 @@ class IPositionControl:
         """
         The number of axes the board controls.
         """
-    def getRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getRefAcceleration(self, j: int) -> float | None:
         """
         The reference acceleration of one axis.
         """
@@ -1300,7 +1243,7 @@ class IPositionControl:
         """
         The reference acceleration of each axis.
         """
-    def getRefSpeed(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getRefSpeed(self, j: int) -> float | None:
         """
         The reference speed of one axis.
         """
@@ -1308,7 +1251,7 @@ class IPositionControl:
         """
         The reference speed of each axis.
         """
-    def getTargetPosition(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getTargetPosition(self, j: int) -> float | None:
         """
         The position the last position move of one axis is heading for.
         """
@@ -1316,7 +1259,7 @@ class IPositionControl:
         """
         The positions the last position moves are heading for.
         """
-    def positionMove(self, j: typing.SupportsInt | typing.SupportsIndex, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def positionMove(self, j: int, ref: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Start moving one axis to an absolute position.
         """
@@ -1324,7 +1267,7 @@ class IPositionControl:
         """
         Start moving every axis to an absolute position.
         """
-    def relativeMove(self, j: typing.SupportsInt | typing.SupportsIndex, delta: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def relativeMove(self, j: int, delta: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Start moving one axis by an offset from its current target.
         """
@@ -1332,7 +1275,7 @@ class IPositionControl:
         """
         Start moving every axis by an offset from its current target.
         """
-    def setRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setRefAcceleration(self, j: int, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         The acceleration with which later moves of one axis speed up and slow down.
         """
@@ -1340,7 +1283,7 @@ class IPositionControl:
         """
         The accelerations with which later moves of each axis speed up and slow down.
         """
-    def setRefSpeed(self, j: typing.SupportsInt | typing.SupportsIndex, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setRefSpeed(self, j: int, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         The speed at which later position moves of one axis travel.
         """
@@ -1348,7 +1291,7 @@ class IPositionControl:
         """
         The speeds at which later position moves of each axis travel.
         """
-    def stop(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def stop(self, j: int) -> bool:
         """
         Decelerate one axis to rest at its reference acceleration.
         """
@@ -1369,7 +1312,7 @@ class ITorqueControl:
         """
         The number of axes the board controls.
         """
-    def getRefTorque(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getRefTorque(self, j: int) -> float | None:
         """
         The torque reference of one axis (not the measurement).
         """
@@ -1377,11 +1320,11 @@ class ITorqueControl:
         """
         The torque references of all axes.
         """
-    def getTorque(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getTorque(self, j: int) -> float | None:
         """
         The measured torque of one axis.
         """
-    def getTorqueRange(self, j: typing.SupportsInt | typing.SupportsIndex) -> tuple[float, float] | None:
+    def getTorqueRange(self, j: int) -> tuple[float, float] | None:
         """
         The smallest and largest torque one axis can exert.
         """
@@ -1393,7 +1336,7 @@ class ITorqueControl:
         """
         The measured torques of all axes.
         """
-    def setRefTorque(self, j: typing.SupportsInt | typing.SupportsIndex, t: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setRefTorque(self, j: int, t: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         The torque one axis should exert.
         """
@@ -1414,7 +1357,7 @@ class IVelocityControl:
         """
         The number of axes the board controls.
         """
-    def getRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getRefAcceleration(self, j: int) -> float | None:
         """
         The reference acceleration of one axis.
         """
@@ -1426,11 +1369,11 @@ class IVelocityControl:
         """
         The velocities the last velocity moves asked for.
         """
-    def getRefVelocity(self, j: typing.SupportsInt | typing.SupportsIndex) -> float | None:
+    def getRefVelocity(self, j: int) -> float | None:
         """
         The velocity the last velocity move of one axis asked for.
         """
-    def setRefAcceleration(self, j: typing.SupportsInt | typing.SupportsIndex, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def setRefAcceleration(self, j: int, acc: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         The acceleration with which later moves of one axis speed up and slow down.
         """
@@ -1438,7 +1381,7 @@ class IVelocityControl:
         """
         The accelerations with which later moves of each axis speed up and slow down.
         """
-    def stop(self, j: typing.SupportsInt | typing.SupportsIndex) -> bool:
+    def stop(self, j: int) -> bool:
         """
         Decelerate one axis to rest at its reference acceleration.
         """
@@ -1446,7 +1389,7 @@ class IVelocityControl:
         """
         Decelerate every axis to rest at its reference acceleration.
         """
-    def velocityMove(self, j: typing.SupportsInt | typing.SupportsIndex, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    def velocityMove(self, j: int, sp: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         """
         Start moving one axis at a velocity.
         """
@@ -1491,8 +1434,14 @@ class ControlboardNws:
         ...
     def __exit__(self, *args) -> None:
         ...
+    @typing.overload
     def __init__(self) -> None:
         ...
+    @typing.overload
+    def __init__(self, device: DeviceDriver, config: Searchable) -> None:
+        """
+        A server opened at once: Server(device, config) is Server() then open(device, config).
+        """
     def close(self) -> None:
         """
         Stops streaming and closes every port. Idempotent.
@@ -1513,8 +1462,14 @@ class GrabberNws:
         ...
     def __exit__(self, *args) -> None:
         ...
+    @typing.overload
     def __init__(self) -> None:
         ...
+    @typing.overload
+    def __init__(self, device: DeviceDriver, config: Searchable) -> None:
+        """
+        A server opened at once: Server(device, config) is Server() then open(device, config).
+        """
     def close(self) -> None:
         """
         Stops streaming and closes every port. Idempotent.
@@ -1527,11 +1482,171 @@ class GrabberNws:
         """
         The ports this server opened.
         """
+class ControlboardServer:
+    """
+    The control board service's RPC dispatch over one device, without ports.
+    """
+    FINGERPRINT: typing.ClassVar[str] = 'b78167ee398e4351'
+    SERVICE: typing.ClassVar[str] = 'controlboard'
+    def __init__(self, device: DeviceDriver) -> None:
+        """
+        Answers for `device` (kept alive by the server), through the interfaces it implements.
+        """
+    def command(self, message: Bottle) -> bool:
+        """
+        Carries out one message of <name>/command:i, ([head...]) (values...); False when malformed or refused.
+        """
+    def interfaces(self) -> list[tuple[str, str]]:
+        """
+        (name, fingerprint) of each interface of the service the device implements.
+        """
+    def publish_state(self) -> Bottle | None:
+        """
+        What <name>/state:o publishes (the joint positions), or None when the device cannot say.
+        """
+    def respond(self, request: Bottle) -> Bottle:
+        """
+        The reply to one request bottle: [is] ... for a query, [ok] or [fail] for a command, [nak] for a request the service does not know, a usage line per request for `help`.
+        """
+class GrabberServer:
+    """
+    The camera service's RPC dispatch over one device, without ports.
+    """
+    FINGERPRINT: typing.ClassVar[str] = '6220ba2394fb6703'
+    SERVICE: typing.ClassVar[str] = 'grabber'
+    def __init__(self, device: DeviceDriver) -> None:
+        """
+        Answers for `device` (kept alive by the server), through the interfaces it implements.
+        """
+    def interfaces(self) -> list[tuple[str, str]]:
+        """
+        (name, fingerprint) of each interface of the service the device implements.
+        """
+    def publish_image(self) -> Bottle | None:
+        """
+        The next image as <name> publishes it ([mat] [rgb] ...), or None when the camera has none.
+        """
+    def respond(self, request: Bottle) -> Bottle:
+        """
+        The reply to one request bottle: [is] ... for a query, [ok] or [fail] for a command, [nak] for a request the service does not know, a usage line per request for `help`.
+        """
+class ControlboardClient(IEncoders, IPositionControl, IVelocityControl, ITorqueControl, IPidControl, IControlMode):
+    """
+    The control board service's interfaces, spoken through a transport.
+    """
+    SERVICE: typing.ClassVar[str] = 'controlboard'
+    def __init__(self, transport: typing.Any) -> None:
+        """
+        A client whose requests go to `transport(request) -> reply Bottle | None`.
+        """
+    def check_server(self, robogene_server: bool) -> list[tuple[str, str]]:
+        """
+        Checks the server speaks this client's interfaces: a Robogene server by their fingerprints (returned as (name, fingerprint) pairs), any other one by its protocol version only (never asked for fingerprints). Raises robogene.Error naming what differs.
+        """
+class GrabberClient(IFrameGrabberImage, IFrameGrabberControls):
+    """
+    The camera service's interfaces, spoken through a transport.
+    """
+    SERVICE: typing.ClassVar[str] = 'grabber'
+    def __init__(self, transport: typing.Any) -> None:
+        """
+        A client whose requests go to `transport(request) -> reply Bottle | None`.
+        """
+    def check_server(self, robogene_server: bool) -> list[tuple[str, str]]:
+        """
+        Checks the server speaks this client's interfaces: a Robogene server by their fingerprints (returned as (name, fingerprint) pairs), any other one by its protocol version only (never asked for fingerprints). Raises robogene.Error naming what differs.
+        """
+class RemoteGrabber(DeviceDriver, GrabberClient):
+    """
+    remote_grabber, as PolyDriver.view(RemoteGrabber) gives it: a camera on the network.
+    """
+    def frames_received(self) -> int:
+        """
+        Frames received on the image port since the device opened.
+        """
+class JointData:
+    """
+    A decoded jointData message (YARP 3's stateExt:o): each field is one value per axis, or None when the server flagged it [fail].
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def acceleration(self) -> list[float] | None:
+        """
+        Joint accelerations, deg/s^2.
+        """
+    @property
+    def axes(self) -> int:
+        """
+        The number of axes (values in every field).
+        """
+    @property
+    def control_mode(self) -> list[int] | None:
+        """
+        Control modes, as vocab codes (ControlMode values).
+        """
+    @property
+    def current(self) -> list[float] | None:
+        """
+        Motor currents.
+        """
+    @property
+    def interaction_mode(self) -> list[int] | None:
+        """
+        Interaction modes, as vocab codes.
+        """
+    @property
+    def motor_acceleration(self) -> list[float] | None:
+        """
+        Motor accelerations, deg/s^2.
+        """
+    @property
+    def motor_position(self) -> list[float] | None:
+        """
+        Motor positions, deg.
+        """
+    @property
+    def motor_velocity(self) -> list[float] | None:
+        """
+        Motor speeds, deg/s.
+        """
+    @property
+    def position(self) -> list[float] | None:
+        """
+        Joint positions, deg.
+        """
+    @property
+    def pwm(self) -> list[float] | None:
+        """
+        PWM duty cycles.
+        """
+    @property
+    def torque(self) -> list[float] | None:
+        """
+        Joint torques, N m.
+        """
+    @property
+    def velocity(self) -> list[float] | None:
+        """
+        Joint speeds, deg/s.
+        """
 def _close_all_at_exit() -> None:
     ...
+def decode_image(message: Bottle) -> ImageRgb:
+    """
+    The image of a YARP 3 image message (either row order); ImageError naming the bad field.
+    """
 def decode_joint_data(message: Bottle) -> JointData:
     """
     Reads a jointData message; raises robogene.Error naming the item and the field that is wrong.
+    """
+def encode_image(image: ImageRgb, quantum: typing.SupportsInt | typing.SupportsIndex = 8) -> Bottle:
+    """
+    The image as YARP 3 sends it: [mat] [rgb] (3 size quantum|1<<16 width height) {rows, bottom first}.
+    """
+def encode_joint_data(device: DeviceDriver) -> Bottle | None:
+    """
+    YARP 3's jointData of `device` (what stateExt:o publishes): what it cannot report is flagged [fail]; None when it has no IEncoders or cannot tell its axes.
     """
 def vocab(chars: str) -> int:
     """

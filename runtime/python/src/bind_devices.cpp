@@ -20,6 +20,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -31,9 +32,11 @@
 #include "robogene/dev/device_driver.hpp"
 #include "robogene/dev/driver_factory.hpp"
 #include "robogene/dev/image.hpp"
+#include "robogene/dev/image_codec.hpp"
 #include "robogene/dev/nws/controlboard_nws.hpp"
 #include "robogene/dev/nws/grabber_nws.hpp"
 #include "robogene/dev/nws/network_devices.hpp"
+#include "robogene/dev/nws/remote_grabber.hpp"
 #include "robogene/dev/poly_driver.hpp"
 #include "robogene/dev/property.hpp"
 #include "robogene/dev/simulation_clock.hpp"
@@ -231,6 +234,14 @@ template <class Server>
 void bind_server(py::module_& m, const char* name, const char* doc) {
   py::class_<Server, std::shared_ptr<Server>>(m, name, doc)
       .def(py::init(&make_closed_at_exit<Server>))
+      .def(py::init([](DeviceDriver& device, const Searchable& config) {
+             std::shared_ptr<Server> s = make_closed_at_exit<Server>();
+             py::gil_scoped_release nogil;
+             s->open(device, config);
+             return s;
+           }),
+           py::arg("device"), py::arg("config"), py::keep_alive<1, 2>(),
+           "A server opened at once: Server(device, config) is Server() then open(device, config).")
       .def(
           "open",
           [](Server& s, DeviceDriver& device, const Searchable& config) {
@@ -331,15 +342,33 @@ void bind_property(py::module_& m) {
       .def("__repr__", [](const Property& p) { return "Property(" + p.to_bottle().to_text() + ")"; });
 }
 
+void set_pixels(ImageRgb& image, const py::handle& data) {
+  std::vector<std::uint8_t> bytes = buffer_bytes(data);
+  if (bytes.size() != image.pixels.size()) {
+    throw py::value_error("an image of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                          " needs " + std::to_string(image.pixels.size()) + " pixel bytes, got " +
+                          std::to_string(bytes.size()));
+  }
+  image.pixels = std::move(bytes);
+}
+
 void bind_image(py::module_& m) {
   py::class_<ImageRgb>(m, "ImageRgb", "An RGB image: width x height pixels of 3 bytes, top row first.")
-      .def(py::init([](int width, int height) {
+      .def(py::init([](int width, int height, const std::optional<py::object>& pixels) {
              if (width < 0 || height < 0) throw py::value_error("an image cannot have a negative size");
              ImageRgb image;
              image.resize(width, height);
+             if (pixels) set_pixels(image, *pixels);
              return image;
            }),
-           py::arg("width") = 0, py::arg("height") = 0)
+           py::arg("width") = 0, py::arg("height") = 0, py::arg("pixels") = py::none(),
+           "A black image, or one of `pixels` (width x height x 3 bytes, top row first).")
+      .def("__eq__", [](const ImageRgb& a, const ImageRgb& b) {
+             return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
+           }, py::is_operator())
+      .def("__repr__", [](const ImageRgb& image) {
+        return "ImageRgb(" + std::to_string(image.width) + "x" + std::to_string(image.height) + ")";
+      })
       .def_readonly("width", &ImageRgb::width)
       .def_readonly("height", &ImageRgb::height)
       .def("resize", &ImageRgb::resize, py::arg("width"), py::arg("height"), "Resizes to black pixels.")
@@ -348,15 +377,7 @@ void bind_image(py::module_& m) {
           [](const ImageRgb& image) {
             return py::bytes(reinterpret_cast<const char*>(image.pixels.data()), image.pixels.size());
           },
-          [](ImageRgb& image, const py::handle& data) {
-            std::vector<std::uint8_t> bytes = buffer_bytes(data);
-            if (bytes.size() != image.pixels.size()) {
-              throw py::value_error("an image of " + std::to_string(image.width) + "x" +
-                                    std::to_string(image.height) + " needs " + std::to_string(image.pixels.size()) +
-                                    " pixel bytes, got " + std::to_string(bytes.size()));
-            }
-            image.pixels = std::move(bytes);
-          },
+          [](ImageRgb& image, const py::handle& data) { set_pixels(image, data); },
           "The pixels, row by row, 3 bytes (R, G, B) each.")
       .def(
           "pixel",
@@ -369,6 +390,25 @@ void bind_image(py::module_& m) {
             return py::make_tuple(p[0], p[1], p[2]);
           },
           py::arg("x"), py::arg("y"));
+
+  // A malformed image message: a ValueError saying which field is wrong.
+  static py::exception<std::invalid_argument> image_error(m, "ImageError", PyExc_ValueError);
+  m.def(
+      "encode_image", [](const ImageRgb& image, int quantum) { return dev::encode_image(image, quantum); },
+      py::arg("image"), py::arg("quantum") = 8,
+      "The image as YARP 3 sends it: [mat] [rgb] (3 size quantum|1<<16 width height) {rows, bottom first}.");
+  m.def(
+      "decode_image",
+      [](const Bottle& message) {
+        ImageRgb image;
+        std::string error;
+        if (!dev::decode_image(message, image, error)) {
+          PyErr_SetString(image_error.ptr(), error.c_str());
+          throw py::error_already_set();
+        }
+        return image;
+      },
+      py::arg("message"), "The image of a YARP 3 image message (either row order); ImageError naming the bad field.");
 }
 
 void bind_driver_and_factory(py::module_& m) {
@@ -504,7 +544,12 @@ void bind_poly_driver(py::module_& m) {
       .def_property_readonly("last_error", &PolyDriver::last_error, "Why the last open() failed (\"\" after a success).")
       .def(
           "view",
-          [](const py::object& self, const py::type& interface) -> py::object {
+          [](const py::object& self, const py::type& asked) -> py::object {
+            // robogene.dev's DeviceDriver, the base of Python devices (core.py), stands for the
+            // bound one: it says so in its own __dict__ (its subclasses, the devices, do not).
+            const py::type interface = asked.attr("__dict__").contains("_views_as_device_driver")
+                                           ? py::type::of<DeviceDriver>()
+                                           : asked;
             DeviceDriver* device = self.cast<const PolyDriver&>().device();
             if (device == nullptr) return py::none();
             // A Python device is its own view, and needs no PolyDriver to live (a keep-alive
@@ -523,6 +568,9 @@ void bind_poly_driver(py::module_& m) {
             } else if (interface.is(py::type::of<dev::ISimulationClock>())) {
               auto* clock = dynamic_cast<dev::ISimulationClock*>(device);
               view = clock ? py::cast(clock, py::return_value_policy::reference) : py::none();
+            } else if (interface.is(py::type::of<dev::RemoteGrabber>())) {
+              auto* remote = dynamic_cast<dev::RemoteGrabber*>(device);
+              view = remote ? py::cast(remote, py::return_value_policy::reference) : py::none();
             } else {
               view = view_interface(*device, interface);
             }

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// decode_joint_data: the C++ decoder of YARP 3's jointData (a control board's stateExt:o
-// message), so that the Python remote_controlboard reads the stream with the C++ client's rules.
+// encode_joint_data and decode_joint_data: the C++ codec of YARP 3's jointData (a control board's
+// stateExt:o message), the one the network server and remote_controlboard use.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "robogene/dev/device_driver.hpp"
 #include "robogene/dev/joint_data.hpp"
 
 namespace py = pybind11;
@@ -53,6 +54,20 @@ void bind_joint_data(py::module_& m) {
     return "JointData(axes=" + std::to_string(d.position.values.size()) + ")";
   });
 
+  m.def(
+      "encode_joint_data",
+      [](dev::DeviceDriver& device) -> std::optional<Bottle> {
+        Bottle out;
+        bool done = false;
+        {
+          py::gil_scoped_release nogil;
+          done = dev::encode_joint_data(device, out);
+        }
+        return done ? std::optional<Bottle>(std::move(out)) : std::nullopt;
+      },
+      py::arg("device"),
+      "YARP 3's jointData of `device` (what stateExt:o publishes): what it cannot report is flagged [fail]; "
+      "None when it has no IEncoders or cannot tell its axes.");
   m.def("decode_joint_data", &dev::decode_joint_data, py::arg("message"),
         "Reads a jointData message; raises robogene.Error naming the item and the field that is wrong.");
 }

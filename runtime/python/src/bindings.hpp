@@ -20,6 +20,8 @@ void bind_rpc(pybind11::module_& m);
 void bind_joint_data(pybind11::module_& m);
 // The device layer (bind_devices.cpp, with the generated generated/bind_interfaces.cpp).
 void bind_devices(pybind11::module_& m);
+// The generated RPC dispatch and clients of each device service, without ports (bind_device_rpc.cpp).
+void bind_device_rpc(pybind11::module_& m);
 
 // A Bottle from a Python sequence, converting each item the way Bottle.add does.
 Bottle bottle_from_sequence(const pybind11::handle& seq);

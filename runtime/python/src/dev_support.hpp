@@ -9,6 +9,8 @@
 //   fails does).
 // * python_interface / view_interface: generated; an interface of a Python device by name, and
 //   PolyDriver.view's lookup of an interface class.
+// * Joint: an axis index as the bound methods take it: a Python int, never a bool (True would
+//   silently be axis 1).
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -69,4 +71,27 @@ py::object view_interface(dev::DeviceDriver& device, py::handle interface);
 void bind_generated_types(py::module_& m);
 void bind_generated_interfaces(py::module_& m);
 
+struct Joint {
+  int value = 0;
+  operator int() const { return value; }  // NOLINT(google-explicit-constructor): passed on as the C++ int
+};
+
 }  // namespace robogene::python
+
+namespace pybind11::detail {
+
+// An axis index: what converts to a C++ int except a bool, which fails the call with TypeError.
+template <>
+struct type_caster<robogene::python::Joint> {
+  PYBIND11_TYPE_CASTER(robogene::python::Joint, const_name("int"));
+  bool load(handle src, bool convert) {
+    if (PyBool_Check(src.ptr())) return false;
+    make_caster<int> index;
+    if (!index.load(src, convert)) return false;
+    value.value = cast_op<int>(index);
+    return true;
+  }
+  static handle cast(robogene::python::Joint j, return_value_policy, handle) { return PyLong_FromLong(j.value); }
+};
+
+}  // namespace pybind11::detail

@@ -46,8 +46,9 @@ PYBIND11_MODULE(_core, m) {
   robogene::python::bind_port(m);
   robogene::python::bind_buffered_port(m);
   robogene::python::bind_rpc(m);
-  robogene::python::bind_joint_data(m);
   robogene::python::bind_devices(m);
+  robogene::python::bind_device_rpc(m);
+  robogene::python::bind_joint_data(m);  // after the devices: encode_joint_data takes a DeviceDriver
 
   // Ports still open at exit are closed while the interpreter still grants the GIL to the
   // threads that run their callbacks (later, those threads could never finish).

@@ -36,7 +36,8 @@ std::string Searchable::get_string(std::string_view key, std::string_view fallba
   const Value& v = find(key);
   if (v.is_null()) return std::string(fallback);
   if (v.is_string()) return v.as_string();
-  if (v.is_vocab()) return vocab_to_string(v.as_vocab());
+  // true and false (a bare flag: `--from` without its file) parse as the vocabs [1] and 0: no word.
+  if (v.is_vocab() && v.as_vocab() != vocab("1") && v.as_vocab() != 0) return vocab_to_string(v.as_vocab());
   fail(*this, key, "expected a word or a \"string\", got " + v.to_text());
 }
 

@@ -105,6 +105,19 @@ TEST(Property, CommandLineWithFlagsGroupsAndSeveralValues) {
             "command line argument 1: expected --key, got 'axes'");
 }
 
+TEST(Property, AFlagIsNoWord) {
+  // `--from` given without its file is the flag true, not the file "1".
+  const Property p = Property::from_command_line({"--from", "--name", "/m"});
+  EXPECT_EQ(error_of([&] { p.get_string("from", ""); }),
+            "command line argument 1: key 'from': expected a word or a \"string\", got true");
+  const Property ini = Property::from_ini("verbose\noff false\n", "m.ini");
+  EXPECT_EQ(error_of([&] { ini.get_string("verbose", ""); }),
+            "m.ini:1: key 'verbose': expected a word or a \"string\", got true");
+  EXPECT_EQ(error_of([&] { ini.get_string("off", ""); }),
+            "m.ini:2: key 'off': expected a word or a \"string\", got false");
+  EXPECT_EQ(Property::from_ini("mode vel\n", "m.ini").get_string("mode", ""), "vel");  // a word stays one
+}
+
 TEST(Property, BottleFormRoundTripsWithGroups) {
   const Bottle b = Bottle::from_text("(device test_motor) (axes 2) (pos 1 2) (GENERAL (Joints 4))");
   const Property p = Property::from_bottle(b);

@@ -7,16 +7,16 @@ fixtures of this directory (README.md).
 usage: requests_from_idl.py <service> [axes]"""
 from __future__ import annotations
 
-import importlib.util
 import sys
 from pathlib import Path
 
-# The wire tables alone (pure Python): no need for the compiled core.
-_WIRE = Path(__file__).resolve().parents[3] / "runtime/python/robogene/dev/generated/wire.py"
-_spec = importlib.util.spec_from_file_location("wire", _WIRE)
-wire = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(wire)
-INTERFACES, SERVICES, STRUCTS = wire.INTERFACES, wire.SERVICES, wire.STRUCTS
+# The IDL compiled by the code generator, as `make generate` compiles it: no need for the compiled core.
+ROOT = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(ROOT / "codegen"))
+from robogene_codegen.idl import compile_directory  # noqa: E402
+
+IDL = compile_directory(ROOT / "interfaces" / "idl", root=ROOT)
+STRUCTS = {st.name: st.fields for st in IDL.structs}
 
 EXAMPLES = {"joint": "1", "float64": "0.25", "int32": "3", "bool": "1", "CameraFeature": "7",
             "FeatureMode": "2", "PidType": "[pos]", "ControlMode": "[pos]"}
@@ -32,16 +32,17 @@ def example(t: str, axes: int) -> str:
 
 def main() -> int:
     service, axes = sys.argv[1], int(sys.argv[2]) if len(sys.argv) > 2 else 4
-    _, names, protocol, _ = SERVICES[service]
+    served = next(s for s in IDL.services if s.name == service)
     seen = set()
-    if protocol:
-        print(" ".join(f"[{w}]" for w in protocol[0]))
-    for name in names:
-        for method, (wire, _, args, _, _) in INTERFACES[name][1].items():
-            if wire is None or wire in seen:
+    if served.protocol:
+        print(" ".join(f"[{w}]" for w in served.protocol.wire))
+    for iface in served.interfaces:
+        for method in iface.methods:
+            if method.wire is None or tuple(method.wire) in seen:
                 continue
-            seen.add(wire)
-            print(" ".join([f"[{w}]" for w in wire] + [example(a, axes) for a in args]))
+            seen.add(tuple(method.wire))
+            args = [example(a.type.name + ("[]" if a.per_axis else ""), axes) for a in method.args]
+            print(" ".join([f"[{w}]" for w in method.wire] + args))
     return 0
 
 

@@ -20,6 +20,14 @@ def override_signature(m: Method) -> str:
     return f"bool {m.cpp_name}({', '.join(params)})"
 
 
+def bound_param(f: Field) -> str:
+    """A parameter of a bound method: as the C++ interface takes it, but an axis index is a Joint,
+    which refuses a bool (dev_support.hpp)."""
+    if f.type.name == "joint" and not f.per_axis:
+        return f"Joint {param_name(f)}"
+    return in_param(f)
+
+
 def result_type(m: Method) -> str:
     """What the bound method returns to Python: bool for a command, else the value or None."""
     if not m.results:
@@ -64,7 +72,7 @@ def cpp_string(text: str) -> str:
 
 def emit(idl: Idl) -> dict[str, str]:
     env = environment(__file__)
-    helpers = dict(cpp_type=cpp_type, value_type=value_type, in_param=in_param,
+    helpers = dict(cpp_type=cpp_type, value_type=value_type, in_param=in_param, bound_param=bound_param,
                    override_signature=override_signature, result_type=result_type,
                    arg_names=arg_names, call_args=call_args, py_args=py_args, param_name=param_name,
                    described=described, cpp_string=cpp_string, vocab_int=vocab_int)

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`python -m robogene.dev`, the Python `robogene dev` (the paper's yarpdev): builds a device
 configuration from --from FILE.ini and the command line (`--key value`, later wins), opens the
-device with the Python factory and serves it on the network until SIGINT / SIGTERM, then closes
-it, unregistering its ports.
+device with the factory (the C++ drivers, and the Python devices of a program that calls run()
+after adding them) and serves it with the C++ servers until SIGINT / SIGTERM, then closes it, unregistering its ports. A device that is
+not itself a server is wrapped by the one that fits it (wrapper_for), as yarpdev does.
 
     python -m robogene.dev --device test_motor --name /motors
     python -m robogene.dev --device controlBoard_nws_yarp --subdevice test_motor --name /motors
@@ -15,10 +16,8 @@ import sys
 import threading
 from typing import Optional, Sequence
 
-from .device_driver import DeviceDriver
-from .poly_driver import PolyDriver
-from .property import ConfigError, Property
-from .wrappers import NetworkWrapper, serve
+from .core import ConfigError, ControlboardNws, DeviceDriver, GrabberNws, INetworkWrapper, PolyDriver, Property, \
+    wrapper_for
 
 USAGE = "python -m robogene.dev [--server HOST:PORT] [--from FILE.ini] --device NAME [--key value ...]"
 
@@ -53,6 +52,9 @@ def _wait_for_shutdown_signal() -> None:
             signal.signal(s, h)
 
 
+SERVERS = {"controlBoard_nws_yarp": ControlboardNws, "frameGrabber_nws_yarp": GrabberNws}
+
+
 def run(args: Sequence[str]) -> int:
     config = device_config(args)
     name = config.get_string("device", "")
@@ -61,9 +63,14 @@ def run(args: Sequence[str]) -> int:
         raise ConfigError(device.last_error)
     server = None
     try:
-        wrapper = device.view(NetworkWrapper)
+        wrapper = device.view(INetworkWrapper)
         if wrapper is None:
-            server = serve(device.view(DeviceDriver), config)
+            kind = wrapper_for(device.view(DeviceDriver))
+            if kind not in SERVERS:
+                raise ConfigError(f"device '{name}' cannot be served: it is neither a control board nor a camera, "
+                                  "and not a wrapper")
+            server = SERVERS[kind]()
+            server.open(device.view(DeviceDriver), config)
             ports = server.port_names()
         else:
             ports = wrapper.port_names()

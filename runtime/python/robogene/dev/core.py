@@ -29,15 +29,20 @@ from .. import _core
 from .._core import (  # noqa: F401  (re-exported API)
     CameraFeature,
     ConfigError,
+    ControlboardClient,
     ControlboardNws,
+    ControlboardServer,
     ControlMode,
     DriverFactory,
     FeatureMode,
+    GrabberClient,
     GrabberNws,
+    GrabberServer,
     IControlMode,
     IEncoders,
     IFrameGrabberControls,
     IFrameGrabberImage,
+    ImageError,
     ImageRgb,
     INetworkWrapper,
     IPidControl,
@@ -49,7 +54,11 @@ from .._core import (  # noqa: F401  (re-exported API)
     PidType,
     PolyDriver,
     Property,
+    RemoteGrabber,
     Searchable,
+    decode_image,
+    encode_image,
+    encode_joint_data,
     wrapper_for,
 )
 
@@ -60,7 +69,9 @@ INTERFACES = (IControlMode, IEncoders, IFrameGrabberControls, IFrameGrabberImage
 class DeviceDriver(_core.DeviceDriver):
     """The base of a device written in Python. Its __init__ sets up every bound base the class
     derives from (DeviceDriver and each interface): a subclass that defines __init__ calls
-    super().__init__()."""
+    super().__init__(). PolyDriver.view(DeviceDriver) gives the device, C++ or Python."""
+
+    _views_as_device_driver = True  # read by PolyDriver.view, in this class's own __dict__ only
 
     def __init__(self) -> None:
         for base in type(self).__mro__:
@@ -69,8 +80,9 @@ class DeviceDriver(_core.DeviceDriver):
                 base.__init__(self)
 
 
-__all__ = ["CameraFeature", "ConfigError", "ControlMode", "ControlboardNws", "DeviceDriver", "DriverFactory",
-           "FeatureMode", "GrabberNws", "IControlMode", "IEncoders", "IFrameGrabberControls", "IFrameGrabberImage",
+__all__ = ["CameraFeature", "ConfigError", "ControlMode", "ControlboardClient", "ControlboardNws",
+           "ControlboardServer", "DeviceDriver", "DriverFactory", "FeatureMode", "GrabberClient", "GrabberNws",
+           "GrabberServer", "IControlMode", "IEncoders", "IFrameGrabberControls", "IFrameGrabberImage",
            "INTERFACES", "INetworkWrapper", "IPidControl", "IPositionControl", "ISimulationClock", "ITorqueControl",
-           "IVelocityControl", "ImageRgb", "Pid", "PidType", "PolyDriver", "Property", "Searchable",
-           "wrapper_for"]
+           "IVelocityControl", "ImageError", "ImageRgb", "Pid", "PidType", "PolyDriver", "Property", "RemoteGrabber", "Searchable",
+           "decode_image", "encode_image", "encode_joint_data", "wrapper_for"]

@@ -1098,7 +1098,7 @@ void bind_generated_interfaces(py::module_& m) {
       .def_property_readonly_static("VERSION", [](py::object) { return IControlMode::kVersion; })
       .def(
           "getControlMode",
-          [](IControlMode& self, int j) -> std::optional<ControlMode> {
+          [](IControlMode& self, Joint j) -> std::optional<ControlMode> {
             ControlMode mode{};
             bool done_ = false;
             {
@@ -1124,7 +1124,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The control mode of every axis.")
       .def(
           "setControlMode",
-          [](IControlMode& self, int j, ControlMode mode) -> bool {
+          [](IControlMode& self, Joint j, ControlMode mode) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1164,7 +1164,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The number of axes the board controls.")
       .def(
           "getEncoder",
-          [](IEncoders& self, int j) -> std::optional<double> {
+          [](IEncoders& self, Joint j) -> std::optional<double> {
             double v{};
             bool done_ = false;
             {
@@ -1190,7 +1190,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The measured positions of all axes.")
       .def(
           "getEncoderSpeed",
-          [](IEncoders& self, int j) -> std::optional<double> {
+          [](IEncoders& self, Joint j) -> std::optional<double> {
             double sp{};
             bool done_ = false;
             {
@@ -1216,7 +1216,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The measured speeds of all axes.")
       .def(
           "getEncoderAcceleration",
-          [](IEncoders& self, int j) -> std::optional<double> {
+          [](IEncoders& self, Joint j) -> std::optional<double> {
             double acc{};
             bool done_ = false;
             {
@@ -1242,7 +1242,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The measured accelerations of all axes.")
       .def(
           "resetEncoder",
-          [](IEncoders& self, int j) -> bool {
+          [](IEncoders& self, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1264,7 +1264,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Make the current positions of all axes read as zero.")
       .def(
           "setEncoder",
-          [](IEncoders& self, int j, double val) -> bool {
+          [](IEncoders& self, Joint j, double val) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1425,7 +1425,7 @@ void bind_generated_interfaces(py::module_& m) {
       .def_property_readonly_static("VERSION", [](py::object) { return IPidControl::kVersion; })
       .def(
           "setPid",
-          [](IPidControl& self, PidType pidtype, int j, const Pid& pid) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j, const Pid& pid) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1447,7 +1447,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Replace the gains of one controller of every axis.")
       .def(
           "getPid",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<Pid> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<Pid> {
             Pid pid{};
             bool done_ = false;
             {
@@ -1473,7 +1473,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The gains of one controller of every axis.")
       .def(
           "setPidReference",
-          [](IPidControl& self, PidType pidtype, int j, double ref) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j, double ref) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1495,7 +1495,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Drive one controller of every axis directly with a reference.")
       .def(
           "getPidReference",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<double> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<double> {
             double ref{};
             bool done_ = false;
             {
@@ -1521,7 +1521,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The references one controller of every axis is following.")
       .def(
           "setPidErrorLimit",
-          [](IPidControl& self, PidType pidtype, int j, double limit) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j, double limit) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1543,7 +1543,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The largest errors one controller of each axis tolerates.")
       .def(
           "getPidErrorLimit",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<double> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<double> {
             double limit{};
             bool done_ = false;
             {
@@ -1569,7 +1569,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The largest errors one controller of each axis tolerates.")
       .def(
           "getPidError",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<double> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<double> {
             double err{};
             bool done_ = false;
             {
@@ -1595,7 +1595,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The current errors of one controller of every axis.")
       .def(
           "getPidOutput",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<double> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<double> {
             double out{};
             bool done_ = false;
             {
@@ -1621,7 +1621,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The current outputs of one controller of every axis.")
       .def(
           "setPidOffset",
-          [](IPidControl& self, PidType pidtype, int j, double v) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j, double v) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1632,7 +1632,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Set the value added to one controller's output (the offset of its gains).")
       .def(
           "enablePid",
-          [](IPidControl& self, PidType pidtype, int j) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1643,7 +1643,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Switch one controller on.")
       .def(
           "disablePid",
-          [](IPidControl& self, PidType pidtype, int j) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1654,7 +1654,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Switch one controller off, so that it no longer drives its axis.")
       .def(
           "resetPid",
-          [](IPidControl& self, PidType pidtype, int j) -> bool {
+          [](IPidControl& self, PidType pidtype, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1665,7 +1665,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Reset one controller, usually making what it measures its reference and clearing its integral.")
       .def(
           "isPidEnabled",
-          [](IPidControl& self, PidType pidtype, int j) -> std::optional<bool> {
+          [](IPidControl& self, PidType pidtype, Joint j) -> std::optional<bool> {
             bool enabled{};
             bool done_ = false;
             {
@@ -1696,7 +1696,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The number of axes the board controls.")
       .def(
           "positionMove",
-          [](IPositionControl& self, int j, double ref) -> bool {
+          [](IPositionControl& self, Joint j, double ref) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1718,7 +1718,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Start moving every axis to an absolute position.")
       .def(
           "relativeMove",
-          [](IPositionControl& self, int j, double delta) -> bool {
+          [](IPositionControl& self, Joint j, double delta) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1740,7 +1740,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Start moving every axis by an offset from its current target.")
       .def(
           "checkMotionDone",
-          [](IPositionControl& self, int j) -> std::optional<bool> {
+          [](IPositionControl& self, Joint j) -> std::optional<bool> {
             bool flag{};
             bool done_ = false;
             {
@@ -1766,7 +1766,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Whether each axis has reached its target.")
       .def(
           "setRefSpeed",
-          [](IPositionControl& self, int j, double sp) -> bool {
+          [](IPositionControl& self, Joint j, double sp) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1788,7 +1788,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The speeds at which later position moves of each axis travel.")
       .def(
           "setRefAcceleration",
-          [](IPositionControl& self, int j, double acc) -> bool {
+          [](IPositionControl& self, Joint j, double acc) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1810,7 +1810,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The accelerations with which later moves of each axis speed up and slow down.")
       .def(
           "getRefSpeed",
-          [](IPositionControl& self, int j) -> std::optional<double> {
+          [](IPositionControl& self, Joint j) -> std::optional<double> {
             double sp{};
             bool done_ = false;
             {
@@ -1836,7 +1836,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The reference speed of each axis.")
       .def(
           "getRefAcceleration",
-          [](IPositionControl& self, int j) -> std::optional<double> {
+          [](IPositionControl& self, Joint j) -> std::optional<double> {
             double acc{};
             bool done_ = false;
             {
@@ -1862,7 +1862,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The reference acceleration of each axis.")
       .def(
           "stop",
-          [](IPositionControl& self, int j) -> bool {
+          [](IPositionControl& self, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1884,7 +1884,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Decelerate every axis to rest at its reference acceleration.")
       .def(
           "getTargetPosition",
-          [](IPositionControl& self, int j) -> std::optional<double> {
+          [](IPositionControl& self, Joint j) -> std::optional<double> {
             double ref{};
             bool done_ = false;
             {
@@ -1928,7 +1928,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The number of axes the board controls.")
       .def(
           "getTorque",
-          [](ITorqueControl& self, int j) -> std::optional<double> {
+          [](ITorqueControl& self, Joint j) -> std::optional<double> {
             double t{};
             bool done_ = false;
             {
@@ -1954,7 +1954,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The measured torques of all axes.")
       .def(
           "setRefTorque",
-          [](ITorqueControl& self, int j, double t) -> bool {
+          [](ITorqueControl& self, Joint j, double t) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -1976,7 +1976,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The torques all axes should exert.")
       .def(
           "getRefTorque",
-          [](ITorqueControl& self, int j) -> std::optional<double> {
+          [](ITorqueControl& self, Joint j) -> std::optional<double> {
             double t{};
             bool done_ = false;
             {
@@ -2002,7 +2002,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The torque references of all axes.")
       .def(
           "getTorqueRange",
-          [](ITorqueControl& self, int j) -> std::optional<std::tuple<double, double>> {
+          [](ITorqueControl& self, Joint j) -> std::optional<std::tuple<double, double>> {
             double min{};
             double max{};
             bool done_ = false;
@@ -2048,7 +2048,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The number of axes the board controls.")
       .def(
           "velocityMove",
-          [](IVelocityControl& self, int j, double sp) -> bool {
+          [](IVelocityControl& self, Joint j, double sp) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -2070,7 +2070,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Start moving every axis at a velocity.")
       .def(
           "setRefAcceleration",
-          [](IVelocityControl& self, int j, double acc) -> bool {
+          [](IVelocityControl& self, Joint j, double acc) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -2092,7 +2092,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The accelerations with which later moves of each axis speed up and slow down.")
       .def(
           "getRefAcceleration",
-          [](IVelocityControl& self, int j) -> std::optional<double> {
+          [](IVelocityControl& self, Joint j) -> std::optional<double> {
             double acc{};
             bool done_ = false;
             {
@@ -2118,7 +2118,7 @@ void bind_generated_interfaces(py::module_& m) {
           "The reference acceleration of each axis.")
       .def(
           "stop",
-          [](IVelocityControl& self, int j) -> bool {
+          [](IVelocityControl& self, Joint j) -> bool {
             bool done_ = false;
             {
               py::gil_scoped_release release;
@@ -2140,7 +2140,7 @@ void bind_generated_interfaces(py::module_& m) {
           "Decelerate every axis to rest at its reference acceleration.")
       .def(
           "getRefVelocity",
-          [](IVelocityControl& self, int j) -> std::optional<double> {
+          [](IVelocityControl& self, Joint j) -> std::optional<double> {
             double vel{};
             bool done_ = false;
             {
