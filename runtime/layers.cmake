@@ -12,5 +12,4 @@ set(ROBOGENE_LAYERS
   "carriers carriers bottle"
   "ports ports carriers"
   "nameserver nameserver ports"
-  # The device layer keeps runtime/include/robogene/dev and runtime/src/dev: codegen writes there.
-  "devices . ports")
+  "devices devices ports")

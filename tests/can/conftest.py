@@ -13,7 +13,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 # Every runtime layer's public headers (runtime/layers.cmake).
-RUNTIME_INCLUDES = [ROOT / "runtime" / "include", *sorted((ROOT / "runtime").glob("*/include"))]
+RUNTIME_INCLUDES = sorted((ROOT / "runtime").glob("*/include"))
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT / "codegen"))
 
@@ -92,7 +92,7 @@ def cpp(build_dir):
 
 @pytest.fixture(scope="session")
 def property_tool(build_dir):
-    """The runtime's Property ini reader (runtime/src/dev/property*.cpp) in a small program."""
+    """The runtime's Property ini reader (runtime/devices/src/dev/property*.cpp) in a small program."""
     src = ROOT / "runtime" / "src"
     bottle = ROOT / "runtime" / "bottle" / "src"
     sources = [HERE / "property_tool.cpp", *sorted(bottle.glob("*.cpp")),

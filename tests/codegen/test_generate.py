@@ -23,10 +23,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def runtime_include_dirs(root: Path) -> list:
-    """The public include folder of every runtime layer (runtime/layers.cmake): the device layer's
-    runtime/include and runtime/<layer>/include."""
-    return [root / "runtime" / "include",
-            *sorted(p for p in (root / "runtime").glob("*/include") if p.parent.name != "testing")]
+    """The public include folder of every runtime layer (runtime/layers.cmake): runtime/<layer>/include."""
+    return sorted(p for p in (root / "runtime").glob("*/include") if p.parent.name != "testing")
 
 
 def runtime_include_flags(root: Path) -> list:
@@ -47,7 +45,7 @@ def make_copy(tmp_path: Path) -> Path:
     for include in runtime_include_dirs(ROOT):
         shutil.copytree(include, root / include.relative_to(ROOT), dirs_exist_ok=True)
     shutil.copytree(ROOT / "runtime" / "bottle" / "src", root / "runtime" / "bottle" / "src")
-    shutil.copy(ROOT / "runtime" / "src" / "dev" / "rpc_codec.cpp", root / "runtime" / "src" / "dev")
+    shutil.copy(ROOT / "runtime" / "devices" / "src" / "dev" / "rpc_codec.cpp", root / "runtime" / "devices" / "src" / "dev")
     shutil.copytree(ROOT / "runtime" / "python" / "robogene" / "dev",
                     root / "runtime" / "python" / "robogene" / "dev", dirs_exist_ok=True,
                     ignore=shutil.ignore_patterns("__pycache__", "generated"))
@@ -110,14 +108,14 @@ def test_regeneration_takes_under_a_second_of_cpu():
 
 def test_check_names_each_stale_file_and_generate_fixes_them(tmp_path, capsys):
     root = make_copy(tmp_path)
-    hpp = root / "runtime/include/robogene/dev/generated/iencoders.hpp"
+    hpp = root / "runtime/devices/include/robogene/dev/generated/iencoders.hpp"
     hpp.write_text(hpp.read_text() + "// edited by hand\n")
     (root / "docs/generated/interfaces/IControlMode.md").unlink()
     (root / "docs/generated/interfaces/IRemoved.md").write_text("old\n")
     (root / "docs/generated/stray.md").write_text("old\n")
     assert main(["check", "--root", str(root), "--only", "idl"]) == 1
     err = capsys.readouterr().err
-    assert "stale: runtime/include/robogene/dev/generated/iencoders.hpp: differs" in err
+    assert "stale: runtime/devices/include/robogene/dev/generated/iencoders.hpp: differs" in err
     assert "stale: docs/generated/interfaces/IControlMode.md: missing" in err
     assert "stale: docs/generated/interfaces/IRemoved.md: in a generated folder but not in the manifest" in err
     assert "stale: docs/generated/stray.md: in a generated folder but not in the manifest" in err
@@ -353,16 +351,16 @@ def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path, capsys):
     idl.write_text(idl.read_text() + textwrap.indent(NEW_METHOD, "  "))
     assert main(["check", "--root", str(root), "--only", "idl"]) == 1
     err = capsys.readouterr().err
-    assert "stale: runtime/src/dev/generated/controlboard_server.cpp: differs" in err
-    assert "stale: runtime/src/dev/generated/controlboard_client.cpp: differs" in err
+    assert "stale: runtime/devices/src/dev/generated/controlboard_server.cpp: differs" in err
+    assert "stale: runtime/devices/src/dev/generated/controlboard_client.cpp: differs" in err
     assert main(["generate", "--root", str(root), "--only", "idl"]) == 0
     assert main(["check", "--root", str(root), "--only", "idl"]) == 0
 
     src = tmp_path / "server_main.cpp"
     src.write_text(SERVER_MAIN)
     # The regenerated dispatch and the codec from the tree; ports and bottles from the built runtime.
-    sources = [str(root / "runtime/src/dev/generated/controlboard_server.cpp"),
-               str(root / "runtime/src/dev/rpc_codec.cpp"), str(src)]
+    sources = [str(root / "runtime/devices/src/dev/generated/controlboard_server.cpp"),
+               str(root / "runtime/devices/src/dev/rpc_codec.cpp"), str(src)]
     exe = tmp_path / "server_main"
     cc = subprocess.run(["g++", "-std=c++17", "-O0", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
                          *runtime_include_flags(root), *sources, *map(str, messaging_libraries()),
@@ -372,13 +370,13 @@ def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path, capsys):
     # The device layer's objects were built from the old interfaces: none may be linked in.
     linked = set(re.findall(r"librobogene_\w+\.a\(([^)]+)\)", (tmp_path / "server.map").read_text()))
     assert "port.cpp.o" in linked
-    assert not linked & {f"{p.name}.o" for p in (ROOT / "runtime/src/dev").rglob("*.cpp")}, linked
+    assert not linked & {f"{p.name}.o" for p in (ROOT / "runtime/devices/src/dev").rglob("*.cpp")}, linked
     client_src = tmp_path / "client_main.cpp"
     client_src.write_text(CLIENT_MAIN)
     client_exe = tmp_path / "client_main"
     cc = subprocess.run(["g++", "-std=c++17", "-O0", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                         *runtime_include_flags(root), str(root / "runtime/src/dev/generated/controlboard_client.cpp"),
-                         str(root / "runtime/src/dev/rpc_codec.cpp"), str(client_src),
+                         *runtime_include_flags(root), str(root / "runtime/devices/src/dev/generated/controlboard_client.cpp"),
+                         str(root / "runtime/devices/src/dev/rpc_codec.cpp"), str(client_src),
                          *map(str, messaging_libraries()), "-lsqlite3", "-pthread", "-o", str(client_exe)],
                         capture_output=True, text=True)
     assert cc.returncode == 0, cc.stderr
@@ -403,8 +401,8 @@ def test_a_method_added_to_the_idl_is_reachable_by_rpc(tmp_path, capsys):
         fingerprint, near, beyond = out.stdout.split()
         assert (float(near), beyond) == (22.0, "None")
         # The server answered with the edited IEncoders, not the committed one.
-        assert f'"{fingerprint}"' in (root / "runtime/include/robogene/dev/generated/iencoders.hpp").read_text()
-        assert f'"{fingerprint}"' not in (ROOT / "runtime/include/robogene/dev/generated/iencoders.hpp").read_text()
+        assert f'"{fingerprint}"' in (root / "runtime/devices/include/robogene/dev/generated/iencoders.hpp").read_text()
+        assert f'"{fingerprint}"' not in (ROOT / "runtime/devices/include/robogene/dev/generated/iencoders.hpp").read_text()
 
         server.stdin.close()
         assert server.wait(timeout=10) == 0

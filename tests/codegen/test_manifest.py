@@ -179,7 +179,7 @@ def test_a_failing_command_generator_is_named_with_what_it_needs(tree, capsys):
      "can-driver-config: drivers/can/config is not in a folder named `generated`: say `why:`"),
     ("files: [motor_control.cpp, motor_control.hpp]", "files: [motor_control.hpp, motor_control.cpp]",
      "cpp-can: keep the files sorted"),
-    ("into: runtime/src/dev/generated", "into: ../outside/generated", "'../outside/generated' is not a plain relative path"),
+    ("into: runtime/devices/src/dev/generated", "into: ../outside/generated", "'../outside/generated' is not a plain relative path"),
     ("emitter: dbc:emit", "emitter: dbc:emit\n    command: [x, \"{out}\"]", "can-dbc: give exactly one of"),
 ])
 def test_a_wrong_manifest_is_refused_naming_the_line(old, new, message):

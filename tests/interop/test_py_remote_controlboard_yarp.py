@@ -13,7 +13,7 @@ import robogene
 from robogene.dev import IEncoders, IPositionControl, IVelocityControl, PolyDriver, Property
 
 # How old the last jointData may be before remote_controlboard reads by RPC (kStateTimeout in
-# runtime/src/dev/nws/remote_controlboard.cpp, YARP's rule).
+# runtime/devices/src/dev/nws/remote_controlboard.cpp, YARP's rule).
 STATE_TIMEOUT = 0.5
 
 pytestmark = pytest.mark.timeout(120)

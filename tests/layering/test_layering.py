@@ -53,7 +53,7 @@ def test_every_layer_sees_only_its_own_and_lower_headers():
     assert seen["base"] == {"runtime/base/include"}
     assert seen["carriers"] == {"runtime/carriers/include", "runtime/bottle/include", "runtime/base/include"}
     assert "runtime/nameserver/include" not in seen["devices"]
-    assert "runtime/include" not in seen["nameserver"]
+    assert "runtime/devices/include" not in seen["nameserver"]
 
 
 def read_targets(source: Path) -> dict:

@@ -17,7 +17,7 @@ from robogene.dev import (ControlboardNws, ControlboardServer, DeviceDriver, IEn
                           IVelocityControl, PolyDriver, Property)
 
 # How old the last jointData may be before remote_controlboard reads by RPC (kStateTimeout in
-# runtime/src/dev/nws/remote_controlboard.cpp, YARP's rule).
+# runtime/devices/src/dev/nws/remote_controlboard.cpp, YARP's rule).
 STATE_TIMEOUT = 0.5
 
 pytestmark = pytest.mark.timeout(60)
