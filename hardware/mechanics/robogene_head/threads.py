@@ -43,14 +43,14 @@ class TappedHole:
 
 
 def shanks(params: HeadParameters, part) -> list:
-    """(diameter, z0, z1) of a purchased fastener's threaded shanks along its own z: a screw's shank (z 0..length),
-    a male standoff's stud (z -stud_length..0). Empty for anything else."""
+    """(diameter, z0, z1) of a purchased fastener's threaded shanks along its own z: a screw's or a set screw's shank
+    (z 0..length), a male standoff's stud (z -stud_length..0). Empty for anything else."""
     catalog = params.root.node("purchased")
     if part.kind != "purchased" or not catalog.has(part.design):
         return []
     item = params.purchased(part.design)
     kind = item.text("kind") if item.has("kind") else ""
-    if kind == "screw":
+    if kind in ("screw", "set_screw"):
         return [(item.num("diameter"), 0.0, item.num("length"))]
     if kind == "standoff" and item.has("stud_length"):
         return [(item.num("thread"), -item.num("stud_length"), 0.0)]

@@ -290,9 +290,12 @@ class _Checker:
             item = params.purchased(part.design)
             frame = self.w.frames[screw]
             axis = frame[:3, 2]                     # shank along +z, head on -z
-            head_top = frame[:3, 3] - axis * item.num("head_height")
+            # a set screw has no head: the screw itself goes in along the driver's path
+            head = item.text("kind") != "set_screw"
+            head_top = frame[:3, 3] - axis * (item.num("head_height") if head else 0.0)
             driver = self.seq.driver_for(part.design, step.driver)
-            self._tool(step, done, result, f"{screw} ({driver.name})", head_top, -axis, item.num("head_diameter"),
+            self._tool(step, done, result, f"{screw} ({driver.name})", head_top, -axis,
+                       item.num("head_diameter") if head else item.num("diameter"),
                        driver.length, driver.handle, blade=driver.blade, exclude={screw})
             done.append(screw)
 
@@ -408,6 +411,8 @@ def check(params, assembly: Assembly, sequence: Sequence, progress=None) -> Repo
             checker.sweep(step, here, result)
             if step.press and not result.problems:
                 checker.press(step, here, result)
+        else:
+            result.note = "screws only: each one's driver checked along its axis"
         here.extend(step.parts)
         if step.fasteners and not result.problems:
             checker.fasteners(step, here, result, params)

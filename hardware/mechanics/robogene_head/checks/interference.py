@@ -37,6 +37,8 @@ FITS = [
     ("neck_pitch_gearhead", "neck_pitch_stage"),
     ("neck_roll_bearing_*", "neck_roll_stage"),
     ("neck_roll_gearhead", "neck_roll_stage"),
+    ("neck_pitch_hub_screw_*", "neck_pitch_gearhead"),   # the set screws' points on the gearhead's shaft
+    ("neck_roll_hub_screw_*", "neck_roll_gearhead"),
     ("neck_yaw_bearing", "neck_roll_stage"),
     ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
     ("*_eye_pan_gearhead", "*_eye_cup"),

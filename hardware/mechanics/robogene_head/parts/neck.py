@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import board_stack, gearhead_screws, mounts, purchased
+from . import board_stack, drive_hubs, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -14,12 +14,18 @@ SCREW = "iso7380-M3x12"
 # bearing's axial play (about 0.1 mm), which lets the inner ring shift towards the ring
 LUG_GAP = 0.3
 STANDOFF = "standoff-M3x46-FF"
+# mm a gearhead shaft's bore runs past the shaft's end: the shaft bottoms on nothing, the gearhead's flange places it
+BORE_RUNOUT = 1.0
 UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
-                      "face for the pitch motor mount")
+                      "face for the pitch motor mount. The two holes from the top and the front face into the bore are "
+                      "the access to the pitch hub's set screws")
 UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: outer "
                         "ring against the shoulder, a shim ring, DIN 472 groove outside them")
 PITCH_STAGE_NOTE = ("Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount; cross bar: "
-                    "2 x 3.4 through at the front for the front lug's screws")
+                    "2 x 3.4 through at the front for the front lug's screws. Left hub: 2 x M4 tapped (tap drill 3.3), "
+                    "drawn at 4.0, from the shaft bore out, for the set screws on the pitch gearhead's shaft")
+ROLL_STAGE_NOTE = ("Rear hub: 2 x M4 tapped (tap drill 3.3), drawn at 4.0, from the shaft bore out, for the set screws on "
+                   "the roll gearhead's shaft")
 FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: outer ring "
                   "against the shoulder, a shim ring, DIN 472 groove outside them")
 
@@ -132,7 +138,10 @@ def _base(params: HeadParameters) -> list[Part]:
     y_face = gap / 2 + ut
     block = geom.box(-ul / 2, ul / 2, gap / 2, y_face, 0, height)
     bottom_holes = [geom.cyl("z", 3.0, -1, 6, (sx * ul / 4, y_up)) for sx in (-1, 1)]
-    upright_drive = geom.cut(block, geom.cyl("y", shaft_hole(params, "neck_pitch"), gap / 2 - 1, y_face + 1, (0, hp)),
+    pitch_hub = pitch_hub_of(params, (0.0, hp))
+    upright_drive = geom.cut(block, geom.cyl("y", pitch_hub.diameter + 2 * pitch_hub.clearance, gap / 2 - 1, y_face + 1,
+                                             (0, hp)),
+                             *pitch_hub.access_holes({"x": ul / 2, "z": height}),
                              *bottom_holes,
                              *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
                                for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
@@ -200,6 +209,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     y_out = up.num("gap") / 2 + up.num("thickness")
     zr = params.joints["neck_roll"].origin[2]
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
+    hub = pitch_hub_of(params, (0.0, 0.0))
     pitch_bore = params.purchased(params.drive("neck_pitch").text("bearing")).num("bore", positive=True)
     pitch_plate = mounts.mount_thickness(params, "neck_pitch")   # the gearhead's flange, so its shaft's reach
     roll_fixings = mounts.mount_fixings(params, "neck_roll")
@@ -215,12 +225,13 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
         geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
         geom.box(-x_out, fx1, -lw / 2, lw / 2, bar, bh / 2),                     # cross bar under both lugs
         geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bar, zr + lw / 2),        # rear lug
-        geom.cyl("y", pitch_bore, bw / 2 - 1, y_out),          # pitch shafts, integral with the stage
-        geom.cyl("y", pitch_bore, -y_out, -bw / 2 + 1),
+        geom.cyl("y", hub.diameter, bw / 2 - 1, y_out - hub.clearance),     # the drive's hub, integral with the stage
+        geom.cyl("y", pitch_bore, -y_out, -bw / 2 + 1),                      # the floating bearing's journal
     )
     # The rear lug carries no bearing: the roll gearhead's own bearings are the roll shaft's fixed bearing.
     stage = geom.cut(stage,
-                     geom.cyl("y", gear.num("shaft_diameter"), y_out - gear.num("shaft_length") + pitch_plate, y_out + 1),
+                     geom.cyl("y", gear.num("shaft_diameter"), hub.tip - BORE_RUNOUT, y_out + 1),
+                     *hub.tapped_holes(),
                      geom.cyl("x", shaft_hole(params, "neck_roll"), -x_out - 1, -span / 2 + 1, (0, zr)),
                      *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
                      *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws])
@@ -233,6 +244,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
                   geom.single_solid(front, "front lug"), material="aluminium-6082", color=ALUMINIUM, note=FRONT_LUG_NOTE)]
     for i, (x, y) in enumerate(lug_screws):   # heads under the cross bar, 4 mm of it, the rest into the lug
         parts.append(purchased.screw(params, f"front_lug_screw_{i}", SCREW, "neck_pitch_link", loc(x, y, bar)))
+    parts += hub_screws(params, hub, "neck_pitch_link")
     key = params.drive("neck_roll").text("bearing")
     parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(b0, 0, zr, ry=90)))
     if spacer(params):
@@ -272,20 +284,47 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
     shaft = yaw_bearing.num("bore")
     roll_bore = params.purchased(params.drive("neck_roll").text("bearing")).num("bore", positive=True)
+    roll_plate = mounts.mount_thickness(params, "neck_roll")   # the gearhead's flange, so its shaft's reach
+    tip = -x_out + gear.num("shaft_length") - roll_plate
+    hub = drive_hubs.hub(params, "neck_roll", "x", (0.0, 0.0), tip, -1.0)
+    x_lug = lug.num("span") / 2
+    if -x_lug + hub.clearance >= -bl / 2 or hub.plane - hub.screw_diameter / 2 < -x_lug + hub.clearance + 1:
+        raise ParameterError(f"{params.path}: geometry.drive_hubs.neck_roll: the roll hub between the rear lug "
+                             f"(x = {-x_lug:g}) and the roll stage's body (x = {-bl / 2:g}) has no room for its set "
+                             f"screws at x = {hub.plane:g}")
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
+                       geom.cyl("x", hub.diameter, -x_lug + hub.clearance, -bl / 2 + 1),      # the drive's hub
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
-    roll_plate = mounts.mount_thickness(params, "neck_roll")   # the gearhead's flange, so its shaft's reach
-    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,
-                                      -x_out + gear.num("shaft_length") - roll_plate))
+    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
+                     *hub.tapped_holes())
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
-             material="aluminium-6082", color=ALUMINIUM),
+             material="aluminium-6082", color=ALUMINIUM, note=ROLL_STAGE_NOTE),
+        *hub_screws(params, hub, "neck_roll_link"),
         Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
              mounts.pulley(params, teeth, shaft), loc(z=zy - yaw_pulley_drop(params)), material="aluminium-6082",
              color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft)),
     ]
+
+
+def pitch_hub_of(params: HeadParameters, at: tuple[float, float]) -> drive_hubs.Hub:
+    """The pitch drive's hub on the pitch stage's left journal; `at`: the pitch axis's (x, z) in the frame wanted."""
+    up = params.geometry("neck_base", "upright")
+    y_out = up.num("gap") / 2 + up.num("thickness")
+    gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
+    tip = y_out + mounts.mount_thickness(params, "neck_pitch") - gear.num("shaft_length")
+    hub = drive_hubs.hub(params, "neck_pitch", "y", at, tip, 1.0)
+    if not (up.num("gap") / 2 < hub.plane - hub.access / 2 and hub.plane + hub.access / 2 < y_out):
+        raise ParameterError(f"{params.path}: geometry.drive_hubs.neck_pitch: the set screws at y = {hub.plane:g} "
+                             f"must be reached through the left upright ({up.num('gap') / 2:g}..{y_out:g})")
+    return hub
+
+
+def hub_screws(params: HeadParameters, hub: drive_hubs.Hub, link: str) -> list[Part]:
+    return [purchased.set_screw(params, f"{hub.joint}_hub_screw_{i}", hub.screw, link, hub.screw_location(d))
+            for i, d in enumerate(hub.directions)]
 
 
 def yaw_pulley_drop(params: HeadParameters) -> float:
