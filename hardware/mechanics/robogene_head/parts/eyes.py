@@ -62,7 +62,8 @@ def build(params: HeadParameters) -> list[Part]:
         geom.box(-al_ / 2 - 4, al_ / 2 + 4, -arm_out, arm_out, z_top - pt, z_top),      # plate under the eyes
         geom.box(-al_ / 2, al_ / 2, arm_in, arm_out, z_top - pt, ah),                  # arms up to the tilt axis
         geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
-        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + pulley_gap + pw),   # tilt shafts
+        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1,                         # tilt shafts, the left one
+                 hw + pulley_gap + pw + mounts.joint_hub_length(params)),             # through the pulley's hub
         geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
     )
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
@@ -83,9 +84,15 @@ def build(params: HeadParameters) -> list[Part]:
                   note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
-    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
-                      mounts.pulley(params, teeth, bore), loc(0, hw + pulley_gap, 0, rx=-90),
-                      material="aluminium-6082", color=ALUMINIUM, note=mounts.pulley_note(params, teeth, bore)))
+    # The joint pulley's hub stands outboard of it; its set screws bear on the left tilt shaft.
+    at = loc(0, hw + pulley_gap, 0, rx=-90)
+    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link", "machined",
+                      mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True), at,
+                      material="aluminium-6082", color=ALUMINIUM,
+                      note=mounts.pulley_note(params, teeth, bore, joint="eyes_tilt")))
+    screw = mounts.joint_set_screw(params)
+    parts += [purchased.set_screw(params, f"eyes_tilt_pulley_set_screw_{i}", screw, "eyes_tilt_link", at * frame)
+              for i, frame in enumerate(mounts.set_screw_frames(params, "eyes_tilt", bore, outboard=True))]
     cup = eye_cup(params)
     cam_key = params.root.node("cameras").text("model")
     for side, sign in (("left", 1), ("right", -1)):

@@ -279,13 +279,17 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,
                                       -x_out + gear.num("shaft_length") - roll_plate))
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
+    # The joint pulley's hub hangs below it, towards the roll stage; its set screws bear on the fixed yaw shaft.
+    at = loc(z=zy - yaw_pulley_drop(params))
+    screw = mounts.joint_set_screw(params)
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
              material="aluminium-6082", color=ALUMINIUM),
-        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
-             mounts.pulley(params, teeth, shaft), loc(z=zy - yaw_pulley_drop(params)), material="aluminium-6082",
-             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft)),
-    ]
+        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}_hub", "neck_roll_link", "machined",
+             mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
+             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft, joint="neck_yaw")),
+    ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
+         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))]
 
 
 def yaw_pulley_drop(params: HeadParameters) -> float:
@@ -298,7 +302,7 @@ def build(params: HeadParameters) -> list[Part]:
     # The yaw pulleys hang between the roll stage and the head floor.
     zy = params.joints["neck_yaw"].origin[2]
     top = params.geometry("neck_roll_stage", "body").num("height") / 2
-    if zy - yaw_pulley_drop(params) - top < params.geometry("clearances").num("minimum"):
+    if zy - yaw_pulley_drop(params) - mounts.joint_hub_length(params) - top < params.geometry("clearances").num("minimum"):
         raise ParameterError(f"{params.path}: joints.neck_yaw.origin[2]: {zy} leaves no room for the yaw pulleys "
-                             f"above the roll stage (top at {top})")
+                             f"and the joint pulley's hub above the roll stage (top at {top})")
     return _base(params) + _pitch_stage(params) + _roll_stage(params)
