@@ -302,7 +302,12 @@ def build(params: HeadParameters) -> list[Part]:
     # The yaw pulleys hang between the roll stage and the head floor.
     zy = params.joints["neck_yaw"].origin[2]
     top = params.geometry("neck_roll_stage", "body").num("height") / 2
-    if zy - yaw_pulley_drop(params) - mounts.joint_hub_length(params) - top < params.geometry("clearances").num("minimum"):
+    if zy - yaw_pulley_drop(params) - top < params.geometry("clearances").num("minimum"):
         raise ParameterError(f"{params.path}: joints.neck_yaw.origin[2]: {zy} leaves no room for the yaw pulleys "
-                             f"and the joint pulley's hub above the roll stage (top at {top})")
+                             f"above the roll stage (top at {top})")
+    # The joint pulley's hub stands on the roll stage's top face (both on the roll link): it may reach it, not into it.
+    room = zy - yaw_pulley_drop(params) - top
+    if mounts.joint_hub_length(params) > room + 1e-9:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.length: {mounts.joint_hub_length(params):g} "
+                             f"reaches into the roll stage: the yaw joint pulley stands {room:g} above it")
     return _base(params) + _pitch_stage(params) + _roll_stage(params)
