@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """The belt-driven joints' pulleys take their torque through set screws in a hub: the torque_paths data names what
-the CAD draws (the bore is the shaft, as many set screws as drawn, each reaching the shaft radially from the hub's
-surface), the check passes them, and it fails the same joints on a plain bore or a hub with one screw."""
+the CAD draws (the bore is the shaft, as many set screws as drawn, each reaching a flat on the shaft radially), the
+check passes them and fails the same joints on a plain bore or one small screw, and the screws' key reaches them."""
 import copy
 import math
 from pathlib import Path
@@ -70,9 +70,12 @@ def mismatches(params, joint) -> list[str]:
     axis_origin = np.array(placed.toTuple()[0])
     matrix = placed.wrapped.Transformation()
     axis = np.array([matrix.Value(i, 3) for i in (1, 2, 3)])
+    flats = [f for f in shaft.shape.Faces() if f.geomType() == "PLANE"]
     for s in screws:
         if interference._distance(s.shape, shaft.shape) > fit:
             problems.append(f"{s.name} does not reach the shaft")
+        elif not any(interference._distance(s.shape, f) <= fit for f in flats):
+            problems.append(f"{s.name} does not bear on a flat")
         if s.shape.intersect(shaft.shape).Volume() > interference.VOLUME_TOLERANCE:
             problems.append(f"{s.name} cuts into the shaft")
         t = s.placement.wrapped.Transformation()
@@ -139,6 +142,8 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
      r"geometry\.pulleys\.joint_hub\.length: 3 leaves no metal"),
     (lambda d: d["geometry"]["pulleys"]["joint_hub"].update(set_screw="iso7380-M3x8"),
      r"geometry\.pulleys\.joint_hub\.set_screw: 'iso7380-M3x8' is a screw, expected a set_screw"),
+    (lambda d: d["geometry"]["pulleys"]["joint_hub"].update(flat_depth=0.05),
+     r"geometry\.pulleys\.joint_hub\.flat_depth: 0\.05 on a 6 mm shaft does not make a flat as wide as the M3"),
     (lambda d: d["geometry"]["pulleys"]["tilt"].update(set_screw_angles=[]),
      r"geometry\.pulleys\.tilt\.set_screw_angles: expected a list"),
 ])

@@ -74,18 +74,22 @@ def build(params: HeadParameters) -> list[Part]:
         found = eye_stops.pins(params, f"{side}_eye_pan", sign * half, z_top, "eyes_tilt_link")
         stop_pins += found[0]
         stop_holes += found[1]
+    pulley_at = loc(0, hw + pulley_gap, 0, rx=-90)   # the tilt joint pulley's frame: its body along +y
     frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
                               for s in (1, -1)],
                      *[t.moved(f) for f in flanges.values()
                        for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)],
-                     *stop_holes)
+                     *stop_holes,
+                     # flats for the joint pulley's set screws on the left tilt shaft, along the pulley's hub
+                     *[t.moved(pulley_at) for t in mounts.shaft_flats(params, "eyes_tilt", tilt_bearing.num("bore"),
+                                                                      outboard=True)])
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
                   material="aluminium-6082", color=ALUMINIUM,
                   note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
-    # The joint pulley's hub stands outboard of it; its set screws bear on the left tilt shaft.
-    at = loc(0, hw + pulley_gap, 0, rx=-90)
+    # The joint pulley's hub stands outboard of it; its set screws bear on the flats of the left tilt shaft.
+    at = pulley_at
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link", "machined",
                       mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True), at,
                       material="aluminium-6082", color=ALUMINIUM,

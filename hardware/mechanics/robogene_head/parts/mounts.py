@@ -160,17 +160,36 @@ def joint_hub_span(params: HeadParameters, outboard: bool) -> tuple[float, float
     return (width, width + length) if outboard else (-length, 0.0)
 
 
+def flat_depth(params: HeadParameters, bore: float) -> float:
+    """How deep the flat is that each set screw bears on (joint_hub.flat_depth): wide enough for the screw's end."""
+    depth = joint_hub(params).num("flat_depth", positive=True)
+    screw = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
+    if depth >= bore / 2 or 2 * math.sqrt(bore * bore / 4 - (bore / 2 - depth) ** 2) < screw:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.flat_depth: {depth:g} on a {bore:g} mm "
+                             f"shaft does not make a flat as wide as the M{screw:g} set screw")
+    return depth
+
+
 def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Location]:
-    """Each set screw's frame in its pulley's frame: its outer end at the hub's surface, +z radially in, so its
-    cup point reaches the bore."""
+    """Each set screw's frame in its pulley's frame: +z radially in, its end on the shaft's flat under it (so
+    its socket end sits the flat's depth below the hub's surface)."""
     z0, z1 = joint_hub_span(params, outboard)
-    r = bore / 2 + joint_hub(params).num("wall", positive=True)
+    length = params.purchased(joint_set_screw(params)).num("length", positive=True)
+    r = bore / 2 - flat_depth(params, bore) + length
     frames = []
     for angle in set_screw_angles(params, joint):
         a = math.radians(angle)
         frames.append(cq.Location(cq.Vector(r * math.cos(a), r * math.sin(a), (z0 + z1) / 2), cq.Vector(0, 0, 1), angle)
                       * cq.Location(cq.Vector(), cq.Vector(0, 1, 0), -90))
     return frames
+
+
+def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Shape]:
+    """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub."""
+    z0, z1 = joint_hub_span(params, outboard)
+    inner = bore / 2 - flat_depth(params, bore)
+    return [geom.box(inner, bore, -bore, bore, z0, z1).moved(cq.Location(cq.Vector(), cq.Vector(0, 0, 1), angle))
+            for angle in set_screw_angles(params, joint)]
 
 
 def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, outboard: bool) -> cq.Shape:

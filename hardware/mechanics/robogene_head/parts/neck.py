@@ -276,11 +276,12 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
     roll_plate = mounts.mount_thickness(params, "neck_roll")   # the gearhead's flange, so its shaft's reach
-    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,
-                                      -x_out + gear.num("shaft_length") - roll_plate))
-    teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
-    # The joint pulley's hub hangs below it, towards the roll stage; its set screws bear on the fixed yaw shaft.
+    # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
     at = loc(z=zy - yaw_pulley_drop(params))
+    stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1,
+                                      -x_out + gear.num("shaft_length") - roll_plate),
+                     *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)])
+    teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     screw = mounts.joint_set_screw(params)
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
