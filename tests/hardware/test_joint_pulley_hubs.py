@@ -98,7 +98,7 @@ def test_the_torque_path_names_what_the_cad_draws(params, joint):
 def test_a_hub_drawn_with_one_screw_no_longer_matches_the_data(tmp_path):
     """The comparison sees a difference: the CAD with one set screw in the yaw hub, the data still saying two."""
     def one_screw(data):
-        data["geometry"]["pulleys"]["yaw"]["set_screw_angles"] = [0]
+        data["geometry"]["pulleys"]["joint_hub"]["set_screw_angles"]["yaw"] = [0]
     assert mismatches(_load(tmp_path, one_screw), "neck_yaw") == ["count 2, the CAD draws 1"]
 
     def wider_bore(data):
@@ -144,8 +144,8 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
      r"geometry\.pulleys\.joint_hub\.set_screw: 'iso7380-M3x8' is a screw, expected a set_screw"),
     (lambda d: d["geometry"]["pulleys"]["joint_hub"].update(flat_depth=0.05),
      r"geometry\.pulleys\.joint_hub\.flat_depth: 0\.05 on a 6 mm shaft does not make a flat as wide as the M3"),
-    (lambda d: d["geometry"]["pulleys"]["tilt"].update(set_screw_angles=[]),
-     r"geometry\.pulleys\.tilt\.set_screw_angles: expected a list"),
+    (lambda d: d["geometry"]["pulleys"]["joint_hub"]["set_screw_angles"].update(tilt=[]),
+     r"geometry\.pulleys\.joint_hub\.set_screw_angles\.tilt: expected a list"),
 ])
 def test_a_wrong_joint_hub_is_named(tmp_path, edit, message):
     with pytest.raises(ParameterError, match=message):
@@ -156,7 +156,7 @@ def _yaw_set_screws_reached(params, angles):
     """The yaw pulley's step on the neck as the sequence has it then (pitch stage, roll stage and roll drive in
     place): the pulley goes down onto the yaw shaft, then its set screws are tightened with the 1.5 mm key."""
     data = copy.deepcopy(params.root._data)
-    data["geometry"]["pulleys"]["yaw"]["set_screw_angles"] = angles
+    data["geometry"]["pulleys"]["joint_hub"]["set_screw_angles"]["yaw"] = angles
     variant = parse(data, "variant", params.path)
     parts = {p.name: p for p in neck.build(variant)}
     there = ["neck_pitch_stage", "neck_roll_stage"] + [n for n in parts if n.startswith(("neck_roll_", "roll_mount"))

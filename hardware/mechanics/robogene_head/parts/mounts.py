@@ -146,12 +146,12 @@ def joint_set_screw(params: HeadParameters) -> str:
 def set_screw_angles(params: HeadParameters, joint: str) -> list[float]:
     """Where the joint pulley's set screws sit about its axis (deg from its x axis)."""
     from robogene_head_model.drive_limits import BELTED
-    node = params.geometry("pulleys", BELTED[joint])
-    value = node.raw("set_screw_angles")
+    node = joint_hub(params).node("set_screw_angles")
+    value = node.raw(BELTED[joint])
     if not isinstance(value, list) or not value:
-        raise ParameterError(f"{params.path}: geometry.pulleys.{BELTED[joint]}.set_screw_angles: expected a list "
-                             f"of angles (deg), got {value!r}")
-    return list(node.vec("set_screw_angles", len(value)))
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.set_screw_angles.{BELTED[joint]}: expected "
+                             f"a list of angles (deg), got {value!r}")
+    return list(node.vec(BELTED[joint], len(value)))
 
 
 def joint_hub_span(params: HeadParameters, outboard: bool) -> tuple[float, float]:
