@@ -103,9 +103,9 @@ def test_the_drive_peak_is_its_continuous_rating_or_what_the_current_limit_allow
 
 
 def test_the_present_design_has_no_torque_path_on_the_eyes(params):
-    """Round gearhead shafts in round bores, the joint pulleys on plain bores: nothing carries torque, and the MXL
-    belts are rated below the yaw and tilt drives' peaks. The check says so, element by element. Pitch and roll have
-    their set screws (test_drive_hubs.py) and pass."""
+    """Round gearhead shafts in round bores: nothing carries torque, and the MXL belts are rated below the yaw and
+    tilt drives' peaks. The check says so, element by element. Pitch and roll have their set screws
+    (test_drive_hubs.py), the joint pulleys theirs (test_joint_pulley_hubs.py), and pass."""
     report = torque_path.analyse(params)
     for joint in ("left_eye_pan", "right_eye_pan"):
         assert report.weakest(joint).capacity_Nm == 0

@@ -290,12 +290,12 @@ class _Checker:
             item = params.purchased(part.design)
             frame = self.w.frames[screw]
             axis = frame[:3, 2]                     # shank along +z, head on -z
-            # a set screw has no head: the screw itself goes in along the driver's path
-            head = item.text("kind") != "set_screw"
-            head_top = frame[:3, 3] - axis * (item.num("head_height") if head else 0.0)
+            # a set screw has no head: the driver starts at its socket end, as wide as its thread
+            headless = item.text("kind") == "set_screw"
+            head_top = frame[:3, 3] - axis * (0.0 if headless else item.num("head_height"))
+            width = item.num("diameter" if headless else "head_diameter")
             driver = self.seq.driver_for(part.design, step.driver)
-            self._tool(step, done, result, f"{screw} ({driver.name})", head_top, -axis,
-                       item.num("head_diameter") if head else item.num("diameter"),
+            self._tool(step, done, result, f"{screw} ({driver.name})", head_top, -axis, width,
                        driver.length, driver.handle, blade=driver.blade, exclude={screw})
             done.append(screw)
 

@@ -62,7 +62,8 @@ def build(params: HeadParameters) -> list[Part]:
         geom.box(-al_ / 2 - 4, al_ / 2 + 4, -arm_out, arm_out, z_top - pt, z_top),      # plate under the eyes
         geom.box(-al_ / 2, al_ / 2, arm_in, arm_out, z_top - pt, ah),                  # arms up to the tilt axis
         geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
-        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1, hw + pulley_gap + pw),   # tilt shafts
+        geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1,                         # tilt shafts, the left one
+                 hw + pulley_gap + pw + mounts.joint_hub_length(params)),             # through the pulley's hub
         geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
     )
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
@@ -73,19 +74,29 @@ def build(params: HeadParameters) -> list[Part]:
         found = eye_stops.pins(params, f"{side}_eye_pan", sign * half, z_top, "eyes_tilt_link")
         stop_pins += found[0]
         stop_holes += found[1]
+    pulley_at = loc(0, hw + pulley_gap, 0, rx=-90)   # the tilt joint pulley's frame: its body along +y
     frame = geom.cut(frame, *[geom.cyl("z", pan_gear.num("shaft_diameter") + 2, z_top - pt - 1, z_top + 1, (0, s * half))
                               for s in (1, -1)],
                      *[t.moved(f) for f in flanges.values()
                        for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)],
-                     *stop_holes)
+                     *stop_holes,
+                     # flats for the joint pulley's set screws on the left tilt shaft, along the pulley's hub
+                     *[t.moved(pulley_at) for t in mounts.shaft_flats(params, "eyes_tilt", tilt_bearing.num("bore"),
+                                                                      outboard=True)])
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
                   material="aluminium-6082", color=ALUMINIUM,
                   note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
-    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}", "eyes_tilt_link", "machined",
-                      mounts.pulley(params, teeth, bore), loc(0, hw + pulley_gap, 0, rx=-90),
-                      material="aluminium-6082", color=ALUMINIUM, note=mounts.pulley_note(params, teeth, bore)))
+    # The joint pulley's hub stands outboard of it; its set screws bear on the flats of the left tilt shaft.
+    at = pulley_at
+    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link", "machined",
+                      mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True), at,
+                      material="aluminium-6082", color=ALUMINIUM,
+                      note=mounts.pulley_note(params, teeth, bore, joint="eyes_tilt")))
+    screw = mounts.joint_set_screw(params)
+    parts += [purchased.set_screw(params, f"eyes_tilt_pulley_set_screw_{i}", screw, "eyes_tilt_link", at * frame)
+              for i, frame in enumerate(mounts.set_screw_frames(params, "eyes_tilt", bore, outboard=True))]
     cup = eye_cup(params)
     cam_key = params.root.node("cameras").text("model")
     for side, sign in (("left", 1), ("right", -1)):

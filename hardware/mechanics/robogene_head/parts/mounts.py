@@ -118,6 +118,93 @@ def pulley(params: HeadParameters, teeth: int, bore: float, hub_length: float = 
     return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + hub_length + 1)), f"pulley_{teeth}T")
 
 
+def joint_hub(params: HeadParameters) -> Node:
+    return params.geometry("pulleys", "joint_hub")
+
+
+def joint_hub_length(params: HeadParameters) -> float:
+    return joint_hub(params).num("length", positive=True)
+
+
+def joint_set_screw(params: HeadParameters) -> str:
+    """The purchased set screw of the joint pulleys' hubs; its length is the hub's wall, so it sits flush."""
+    key = joint_hub(params).text("set_screw")
+    screw = params.purchased(key)
+    if screw.text("kind") != "set_screw":
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.set_screw: {key!r} is a "
+                             f"{screw.text('kind')}, expected a set_screw")
+    wall = joint_hub(params).num("wall", positive=True)
+    if screw.num("length", positive=True) > wall:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.wall: {wall:g} is shorter than the "
+                             f"{key} set screw ({screw.num('length'):g}), which would stand out of the hub")
+    if screw.num("diameter", positive=True) >= joint_hub_length(params):
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.length: {joint_hub_length(params):g} "
+                             f"leaves no metal around the {key} set screw's thread")
+    return key
+
+
+def set_screw_angles(params: HeadParameters, joint: str) -> list[float]:
+    """Where the joint pulley's set screws sit about its axis (deg from its x axis)."""
+    from robogene_head_model.drive_limits import BELTED
+    node = joint_hub(params).node("set_screw_angles")
+    value = node.raw(BELTED[joint])
+    if not isinstance(value, list) or not value:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.set_screw_angles.{BELTED[joint]}: expected "
+                             f"a list of angles (deg), got {value!r}")
+    return list(node.vec(BELTED[joint], len(value)))
+
+
+def joint_hub_span(params: HeadParameters, outboard: bool) -> tuple[float, float]:
+    """z range of a joint pulley's hub in the pulley's frame (body z 0..width): below it or beyond it."""
+    width, length = params.geometry("pulleys").num("width", positive=True), joint_hub_length(params)
+    return (width, width + length) if outboard else (-length, 0.0)
+
+
+def flat_depth(params: HeadParameters, bore: float) -> float:
+    """How deep the flat is that each set screw bears on (joint_hub.flat_depth): wide enough for the screw's end."""
+    depth = joint_hub(params).num("flat_depth", positive=True)
+    screw = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
+    if depth >= bore / 2 or 2 * math.sqrt(bore * bore / 4 - (bore / 2 - depth) ** 2) < screw:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.flat_depth: {depth:g} on a {bore:g} mm "
+                             f"shaft does not make a flat as wide as the M{screw:g} set screw")
+    return depth
+
+
+def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Location]:
+    """Each set screw's frame in its pulley's frame: +z radially in, its end on the shaft's flat under it (so
+    its socket end sits the flat's depth below the hub's surface)."""
+    z0, z1 = joint_hub_span(params, outboard)
+    length = params.purchased(joint_set_screw(params)).num("length", positive=True)
+    r = bore / 2 - flat_depth(params, bore) + length
+    frames = []
+    for angle in set_screw_angles(params, joint):
+        a = math.radians(angle)
+        frames.append(cq.Location(cq.Vector(r * math.cos(a), r * math.sin(a), (z0 + z1) / 2), cq.Vector(0, 0, 1), angle)
+                      * cq.Location(cq.Vector(), cq.Vector(0, 1, 0), -90))
+    return frames
+
+
+def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Shape]:
+    """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub."""
+    z0, z1 = joint_hub_span(params, outboard)
+    inner = bore / 2 - flat_depth(params, bore)
+    return [geom.box(inner, bore, -bore, bore, z0, z1).moved(cq.Location(cq.Vector(), cq.Vector(0, 0, 1), angle))
+            for angle in set_screw_angles(params, joint)]
+
+
+def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, outboard: bool) -> cq.Shape:
+    """A joint pulley: the pulley envelope with a hub (joint_hub_span) carrying tapped radial holes for its set
+    screws, drawn at the thread's size like every tapped hole of the head."""
+    hub = joint_hub(params)
+    z0, z1 = joint_hub_span(params, outboard)
+    body = geom.union(pulley(params, teeth, bore), geom.cyl("z", bore + 2 * hub.num("wall", positive=True), z0, z1))
+    thread = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
+    holes = [geom.cyl("z", bore, z0 - 1, z1 + 1)]
+    for frame in set_screw_frames(params, joint, bore, outboard):
+        holes.append(geom.cyl("z", thread, -1, hub.num("wall") + 1).moved(frame))
+    return geom.single_solid(geom.cut(body, *holes), f"joint pulley {joint}")
+
+
 def hub_diameter(params: HeadParameters, bore: float) -> float:
     return bore + 2 * params.geometry("pulleys", "hub").num("wall", positive=True)
 
@@ -191,9 +278,13 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
-def pulley_note(params: HeadParameters, teeth: int, bore: float, hub: bool = False) -> str:
-    """What the drawing of a pulley must say: its teeth are not modelled; a hub too thin for a set screw is
-    bonded to the shaft (kept short: the note is one line on the sheet)."""
+def pulley_note(params: HeadParameters, teeth: int, bore: float, hub: bool = False, joint: str = "") -> str:
+    """What the drawing of a pulley must say: its teeth are not modelled; a motor pulley's hub, too thin for a set
+    screw, is bonded to the shaft; a joint pulley's hub takes set screws (kept short: one line on the sheet)."""
     fixing = ", hub bonded to the shaft" if hub else ""
+    if joint:
+        screw = params.purchased(joint_set_screw(params))
+        fixing = (f", hub {len(set_screw_angles(params, joint))} x M{screw.num('diameter'):g} tapped radial for "
+                  f"{joint_set_screw(params)} set screws")
     return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7{fixing}; "
             f"teeth not drawn: MXL profile")

@@ -296,17 +296,22 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("x", hub.diameter, -x_lug + hub.clearance, -bl / 2 + 1),      # the drive's hub
                        geom.cyl("z", shaft, bh / 2 - 1, zy))
+    # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
+    at = loc(z=zy - yaw_pulley_drop(params))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
-                     *hub.tapped_holes())
+                     *hub.tapped_holes(),
+                     *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)])
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
+    screw = mounts.joint_set_screw(params)
     return [
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
              material="aluminium-6082", color=ALUMINIUM, note=ROLL_STAGE_NOTE),
         *hub_screws(params, hub, "neck_roll_link"),
-        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}", "neck_roll_link", "machined",
-             mounts.pulley(params, teeth, shaft), loc(z=zy - yaw_pulley_drop(params)), material="aluminium-6082",
-             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft)),
-    ]
+        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}_hub", "neck_roll_link", "machined",
+             mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
+             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft, joint="neck_yaw")),
+    ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
+         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))]
 
 
 def pitch_hub_of(params: HeadParameters, at: tuple[float, float]) -> drive_hubs.Hub:
@@ -340,4 +345,9 @@ def build(params: HeadParameters) -> list[Part]:
     if zy - yaw_pulley_drop(params) - top < params.geometry("clearances").num("minimum"):
         raise ParameterError(f"{params.path}: joints.neck_yaw.origin[2]: {zy} leaves no room for the yaw pulleys "
                              f"above the roll stage (top at {top})")
+    # The joint pulley's hub stands on the roll stage's top face (both on the roll link): it may reach it, not into it.
+    room = zy - yaw_pulley_drop(params) - top
+    if mounts.joint_hub_length(params) > room + 1e-9:
+        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.length: {mounts.joint_hub_length(params):g} "
+                             f"reaches into the roll stage: the yaw joint pulley stands {room:g} above it")
     return _base(params) + _pitch_stage(params) + _roll_stage(params)
