@@ -99,6 +99,12 @@ def screw(params: HeadParameters, name: str, key: str, link: str, placement: cq.
     return _purchased(params, name, key, link, shape, placement, DARK)
 
 
+def set_screw(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
+    """Headless set screw, z 0..length: its driven end (the hex socket) on z = 0, its point at z = length."""
+    s = params.purchased(key)
+    return _purchased(params, name, key, link, geom.cyl("z", s.num("diameter"), 0, s.num("length")), placement, DARK)
+
+
 STUD_WEB = 1.0   # mm of solid hex between a male-female standoff's stud and its female thread
 
 
