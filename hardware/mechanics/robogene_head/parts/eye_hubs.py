@@ -91,13 +91,15 @@ def shape(params: HeadParameters, z_plate_top: float) -> cq.Shape:
 
 
 def cup_cuts(params: HeadParameters, z_plate_top: float, cup_radius: float) -> list[cq.Shape]:
-    """What the cup loses to its hub: the neck's and the head's pockets and the set screws' access holes."""
+    """What the cup loses to its hub: below the shaft's end the neck's and the head's outlines together, so the hub
+    goes in from below head first; above it the head's D alone, whose flats take the torque; and the set screws'
+    access holes."""
     h = hub(params)
     bottom, shaft_end, top = levels(params, z_plate_top)
     neck = h.num("neck_diameter", positive=True)
     access = h.num("access_diameter", positive=True)
     z = screw_height(params, z_plate_top)
-    return ([geom.cyl("z", neck, bottom - 1, shaft_end + 0.01), head_profile(params, shaft_end, top)]
+    return ([geom.cyl("z", neck, bottom - 1, shaft_end), head_profile(params, bottom - 1, top)]
             + [geom.cyl("x", access, neck / 2 - 0.5, cup_radius + 1).moved(loc(0, 0, z, rz=a))
                for a in screw_angles(params)])
 
