@@ -3,7 +3,8 @@
 """The assembly sequence: the package's check passed and drew every step; the checker fails, naming the step
 and the parts, on variants that cannot be built: a part that cannot be inserted (the design this sequence
 replaced), a part too wide for its slot (a parameter variant), a screw its driver cannot reach, a contact
-that is not a declared fit, a start that is not outside, a part left out of the sequence."""
+that is not a declared fit, a start that is not outside, a part left out of the sequence, a set screw whose key
+cannot get out through the eye cup."""
 import copy
 import json
 import re
@@ -18,7 +19,7 @@ from robogene_head.assembly import Assembly
 from robogene_head.cache import Cache
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head_model.params import parse
-from robogene_head.parts import head_frame, neck
+from robogene_head.parts import eyes, head_frame, neck
 from robogene_head.progress import Progress
 
 
@@ -162,3 +163,30 @@ def test_the_build_stops_naming_the_step_and_the_parts(params, neck_parts, tmp_p
     assert "step 3 'roll stage'" in message and re.search(r"neck_roll_stage (touches|collides with) neck_roll_bearing_front",
                                                              message), message
     assert (tmp_path / "reports" / "assembly.txt").exists()
+
+
+def _eye_check(params):
+    parts = {p.name: p for p in eyes.build(params)}
+    chosen = [parts[n] for n in ("left_eye_cup", "left_eye_hub", "left_eye_hub_set_screw_0",
+                                 "left_eye_hub_set_screw_1")]
+    steps = [{"name": "cup", "parts": ["left_eye_cup"], "fixture": True},
+             {"name": "hub", "parts": ["left_eye_hub"], "from": [[0, 0, -30]], "fits": ["left_eye_cup"]},
+             {"name": "set screws", "fasteners": ["left_eye_hub_set_screw_*"]}]
+    data = {"drivers": {"hex-0.9": {"blade": 1.0, "length": 50, "handle": 15}},
+            "screw_drivers": {"iso4029-M2": "hex-0.9"}, "subassemblies": {}, "sequence": steps}
+    seq = sequence.parse(data, Path("variant.yaml"), [p.name for p in chosen])
+    return chk.check(params, Assembly(params, chosen), seq)
+
+
+def test_a_set_screw_is_turned_from_its_socket_through_the_cups_access_hole(params):
+    """A headless set screw: the key enters at its socket, the screw's own diameter, and must get out through the
+    eye cup's access hole; a hole narrower than the screw stops it."""
+    report = _eye_check(params)
+    assert report.ok, chk.format_report(report)
+    data = copy.deepcopy(params.root._data)
+    data["geometry"]["eyes"]["hub"]["access_diameter"] = 1.5
+    narrow = parse(data, "variant", params.path)
+    report = _eye_check(narrow)
+    assert report.problems and report.problems[0].step == "step 3 'set screws'"
+    assert re.match(r"left_eye_hub_set_screw_0 \(hex-0.9\): the 2 mm tool along the axis hits left_eye_cup",
+                    report.problems[0].what), report.problems[0].what

@@ -16,7 +16,7 @@ are sampled every FIT_STEP and fail when they share more than VOLUME_TOLERANCE. 
 their meshes only (see _Checker._exact_at): a standoff's stud through a board's hole is a declared fit whose
 overlap is not measured; the fastener tests check the stack's studs and screws in place.
 
-Screws. Each screw goes in along its axis: a cylinder of its head's diameter from the head outwards, and the
+Screws. Each screw goes in along its axis: a cylinder of its head's diameter (a set screw's own, from its socket) from the head outwards, and the
 driver's blade and then its handle beyond the blade's length, must be clear of everything in place until they
 leave the bounding box of the assembly so far. Pressed bearings: the path is one straight move along the
 bearing's axis and an arbor (the outer ring's diameter less 1 mm) behind it must be clear likewise. Flexible

@@ -41,7 +41,8 @@ FITS = [
     ("neck_roll_hub_screw_*", "neck_roll_gearhead"),
     ("neck_yaw_bearing", "neck_roll_stage"),
     ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
-    ("*_eye_pan_gearhead", "*_eye_cup"),
+    ("*_eye_pan_gearhead", "*_eye_hub"),              # the hub's bore on the pan shaft
+    ("*_eye_pan_gearhead", "*_eye_hub_set_screw_*"),  # and its set screws' points
     ("neck_yaw_belt", "neck_yaw_joint_pulley"),     # the belt runs on the pulley of the other link
     ("eyes_tilt_belt", "eyes_tilt_joint_pulley"),
 ]

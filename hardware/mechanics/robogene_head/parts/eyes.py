@@ -6,19 +6,18 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import eye_stops, gearhead_screws, mounts, purchased
+from . import eye_hubs, eye_stops, gearhead_screws, mounts, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
 def eye_cup(params: HeadParameters):
     """Printed eye cup about the eye centre: a sphere cut flat in front, with a pocket that holds the
-    camera board, a lens window and the pan shaft bore below. The pocket is open to the back: the board slides
+    camera board, a lens window and, below, the pocket of the hub that carries it on the pan shaft (eye_hubs). The pocket is open to the back: the board slides
     in from behind against the pocket's front wall, its lens through the window, its flat cable out the back."""
     e = params.geometry("eyes")
     r, front = e.num("cup_radius", positive=True), e.num("cup_front_cut", positive=True)
     cam = params.purchased(params.root.node("cameras").text("model"))
     w, h, t = cam.num("board_width"), cam.num("board_height"), cam.num("thickness")
-    shaft = params.purchased(params.drive("left_eye_pan").text("gearhead")).num("shaft_diameter")
     # Poles on x, both cut flat: the front face carries the lens, the back face is the print bed side.
     back = r - 1.5
     cup = geom.cut(geom.sphere(r, poles="x"), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1),
@@ -26,8 +25,12 @@ def eye_cup(params: HeadParameters):
     cup = geom.cut(cup,
                    geom.box(-r - 1, 0, -w / 2, w / 2, -h / 2, h / 2),              # board pocket, open behind
                    geom.cyl("x", cam.num("lens_diameter"), -0.5, front + 1),       # lens window
-                   geom.cyl("z", shaft, -r - 1, -r + 3))                           # pan shaft bore
+                   *eye_hubs.cup_cuts(params, -r - e.num("gap", positive=True), r))
     corner = ((w / 2) ** 2 + (h / 2) ** 2 + t ** 2) ** 0.5
+    floor = eye_hubs.levels(params, -r - e.num("gap", positive=True))[2]
+    if floor > -h / 2 - 1:
+        raise ParameterError(f"{params.path}: geometry.eyes.hub.head_height: the hub's head reaches z = {floor:g}, "
+                             f"under 1 mm below the camera pocket (z = {-h / 2:g})")
     if corner > r - 1:
         raise ParameterError(f"{params.path}: geometry.eyes.cup_radius: {r} leaves under 1 mm of wall around the "
                              f"camera board corners (they reach {corner:.1f} mm)")
@@ -106,5 +109,6 @@ def build(params: HeadParameters) -> list[Part]:
         parts += gearhead_screws.screws(params, joint, "eyes_tilt_link", flanges[sign], pan_gear.num("diameter"), pt)
         link = params.joints[joint].child
         parts.append(Part(f"{side}_eye_cup", "eye_cup", link, "printed", cup, material="petg-printed", color=PRINTED))
+        parts += eye_hubs.parts(params, side, link, z_top)
         parts.append(purchased.camera(params, f"{side}_camera", cam_key, link, loc()))
     return parts
