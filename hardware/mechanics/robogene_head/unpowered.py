@@ -117,15 +117,15 @@ def format_table(rows: list[Release]) -> str:
     required = rows[0].required if rows else 0.0
     lines = ["Unpowered: each joint released from rest with no holding element and no friction, then its drive's "
              f"holding element against the worst gravity torque, required margin {required:g}",
-             "joint          case    behaviour  at (deg)  torque there  needed | element               holds   "
+             "joint          case    behaviour  at (deg)  torque there  needed | element                   holds  "
              "margin | slips at  gearhead",
-             "                                           (N m)         (N m)  |                       (N m)          "
+             "                                           (N m)         (N m)  |                           (N m)         "
              "|  (N m)     (N m)"]
     for r in rows:
         margin = "     -" if r.margin is None else f"{r.margin:6.2f}"
         flag = "ok" if r.ok else ("FALLS" if not r.held else "OVERLOADS GEARHEAD")
         lines.append(f"{r.joint:<14} {r.case:<7} {r.behaviour:<10} {r.end_deg:8.1f}  {r.torque_at_end_Nm:12.3f}  "
-                     f"{r.hold_Nm:6.3f} | {r.element or 'none':<20} {r.holding_Nm:6.3f}  {margin} | "
+                     f"{r.hold_Nm:6.3f} | {r.element or 'none':<24} {r.holding_Nm:6.3f}  {margin} | "
                      f"{r.slip_Nm:7.3f}  {r.gearhead_rating_Nm:8.3f}  {flag}")
     return "\n".join(lines)
 
