@@ -24,8 +24,14 @@ def expected_limits(data: dict) -> dict[str, tuple[float, float]]:
         motor, gear = data["purchased"][drive["motor"]], data["purchased"][drive["gearhead"]]
         teeth = data["geometry"]["pulleys"].get(BELTS.get(joint), {"joint_teeth": 1, "motor_teeth": 1})
         belt = teeth["joint_teeth"] / teeth["motor_teeth"]
-        at_gear_shaft = min(motor["continuous_torque_mNm"] * 1e-3 * gear["ratio"] * gear["efficiency"],
-                            gear["continuous_torque_Nm"])
+        # kt = U / omega0; the board holds the motor to its current limit (the eye pans: the smaller of the eye
+        # board's two axes)
+        kt = motor["voltage"] / (motor["no_load_speed_rpm"] * 2 * math.pi / 60)
+        control = data["motor_control"]["joints"]
+        amps = (min(control["eyes_version"]["current_limit"], control["eyes_vergence"]["current_limit"])
+                if joint.endswith("eye_pan") else control[joint]["current_limit"]) / 1000
+        at_motor = min(motor["continuous_torque_mNm"] * 1e-3, kt * amps)
+        at_gear_shaft = min(at_motor * gear["ratio"] * gear["efficiency"], gear["continuous_torque_Nm"])
         out[joint] = (at_gear_shaft * belt, motor["no_load_speed_rpm"] / 60 * 2 * math.pi / (gear["ratio"] * belt))
     return out
 
@@ -60,10 +66,31 @@ def test_a_weaker_motor_lowers_its_joints_effort(params, tmp_path):
     def halve(data):
         data["purchased"][motor]["continuous_torque_mNm"] /= 2
     after = urdf_limits(urdf.generate(load(_copy(tmp_path, halve)), {}))
-    assert after["neck_pitch"][0] == pytest.approx(before["neck_pitch"][0] / 2, rel=1e-8)
+    # half of 70 mN m is below what the board's current limit allows: the motor's rating sets the effort now
+    data = yaml.safe_load(DEFAULT_PATH.read_text())
+    assert after["neck_pitch"][0] == pytest.approx(data["purchased"][motor]["continuous_torque_mNm"] / 2e3 * 66 * 0.70,
+                                                   rel=1e-8)
+    assert after["neck_pitch"][0] < before["neck_pitch"][0]
     assert after["neck_pitch"][1] == before["neck_pitch"][1]
     assert {j: v for j, v in after.items() if j != "neck_pitch"} == \
            {j: v for j, v in before.items() if j != "neck_pitch"}
+
+
+def test_the_board_current_limit_caps_the_effort(params, tmp_path):
+    """Pitch: the board's limit, not the motor's continuous rating, sets its effort (kt x I x N x eta); halving the
+    limit halves the effort. The eye pans take the smaller of the eye board's two axis limits, as its firmware does."""
+    pitch = drive_limits.limit(params, "neck_pitch")
+    kt = drive_limits.torque_constant(params, pitch.motor)
+    assert pitch.limited_by == "current limit" and pitch.effort < pitch.rated
+    assert pitch.effort == pytest.approx(kt * pitch.current_limit_mA / 1000 * 66 * 0.70, rel=1e-9)
+
+    def edit(data):
+        data["motor_control"]["joints"]["neck_pitch"]["current_limit"] = pitch.current_limit_mA / 2
+        data["motor_control"]["joints"]["eyes_vergence"]["current_limit"] = 150
+    limits = drive_limits.limits(load(_copy(tmp_path, edit)))
+    assert limits["neck_pitch"].effort == pytest.approx(pitch.effort / 2, rel=1e-9)
+    assert limits["left_eye_pan"].current_limit_mA == limits["right_eye_pan"].current_limit_mA == 150
+    assert limits["left_eye_pan"].limited_by == "current limit"
 
 
 def test_the_gearhead_rating_caps_the_torque_before_the_belt(tmp_path):

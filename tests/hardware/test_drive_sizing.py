@@ -107,6 +107,23 @@ def test_capacities_are_the_urdf_efforts(params, link_props):
 
 
 @HEAVY
+def test_the_motor_capacity_is_what_the_current_limit_allows(params, link_props):
+    """kt x the board's current limit x N x eta where that is below the motor's continuous rating (pitch), the
+    continuous rating where the limit allows more (roll); kt = U / omega0 from the catalogue."""
+    rows = {j.joint: j for j in drive_sizing.size(params, link_props).joints}
+    data = yaml.safe_load(DEFAULT_PATH.read_text())
+    for joint, starved in (("neck_pitch", True), ("neck_roll", False)):
+        drive = data["drives"][joint]
+        motor, gear = data["purchased"][drive["motor"]], data["purchased"][drive["gearhead"]]
+        kt = motor["voltage"] / (motor["no_load_speed_rpm"] * math.pi / 30)
+        amps = data["motor_control"]["joints"][joint]["current_limit"] / 1000
+        assert (kt * amps < motor["continuous_torque_mNm"] / 1000) == starved
+        at_motor = min(kt * amps, motor["continuous_torque_mNm"] / 1000)
+        assert rows[joint].motor_capacity_Nm == pytest.approx(at_motor * gear["ratio"] * gear["efficiency"], rel=1e-9)
+        assert rows[joint].current_limited == starved
+
+
+@HEAVY
 def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
     heavier = load(_copy(tmp_path, lambda d: d["drive_sizing"]["payloads"][0].update(mass=1.2)))
     base = {j.joint: j for j in drive_sizing.size(params, link_props).joints}
@@ -120,6 +137,8 @@ def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
     (lambda d: d["purchased"][d["drives"]["neck_pitch"]["motor"]].update(continuous_torque_mNm=2), "neck_pitch", "motor"),
     (lambda d: d["purchased"][d["drives"]["neck_roll"]["gearhead"]].update(continuous_torque_Nm=0.05), "neck_roll", "gearhead"),
     (lambda d: d["drive_sizing"]["accelerations"].update(left_eye_pan=5e6), "left_eye_pan", "motor"),
+    # the pitch motor's continuous rating needs 3.2 A; the board's old 2000 mA gave it 2.0 of the 3.2 N m
+    (lambda d: d["motor_control"]["joints"]["neck_pitch"].update(current_limit=2000), "neck_pitch", "current limit"),
 ])
 def test_an_undersized_drive_is_refused_with_the_table(params, link_props, tmp_path, edit, joint, limited):
     report = drive_sizing.size(load(_copy(tmp_path, edit)), link_props)

@@ -91,7 +91,7 @@ def test_the_drive_peak_is_its_continuous_rating_or_what_the_current_limit_allow
     for joint in ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "left_eye_pan"):
         peak = torque_path.peak(params, joint)
         limit = drive_limits.limit(params, joint)
-        assert peak.continuous_Nm == pytest.approx(limit.effort / limit.belt)
+        assert peak.continuous_Nm == pytest.approx(limit.rated / limit.belt)
         drive = params.drive(joint)
         motor, gear = params.purchased(drive.text("motor")), params.purchased(drive.text("gearhead"))
         kn = motor.num("no_load_speed_rpm") / motor.num("voltage")

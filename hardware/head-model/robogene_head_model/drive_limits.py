@@ -6,9 +6,16 @@ catalogue data of the motors and gearheads under `purchased:` in the parameter f
 A drive is a motor, then a gearhead, then, on neck_yaw and eyes_tilt only, a belt stage:
   belt      = joint_teeth / motor_teeth of pulleys.yaw or pulleys.tilt (1 without a belt)
   reduction = gearhead ratio x belt
-  effort    = min(motor continuous_torque_mNm / 1000 x gearhead ratio x efficiency,
-                  gearhead continuous_torque_Nm) x belt                                    [N m, continuous]
+  kt        = voltage / no-load speed (rad/s) of the motor                                 [N m/A]
+  motor     = min(motor continuous_torque_mNm / 1000, kt x the board's current limit)     [N m, at the motor]
+  effort    = min(motor x gearhead ratio x efficiency, gearhead continuous_torque_Nm) x belt
+                                                                                           [N m, continuous]
   velocity  = motor no_load_speed_rpm / reduction                                          [at the joint]
+The board's current limit (motor_control.joints.<joint>.current_limit, mA per motor) caps the motor's torque: a limit
+below the motor's continuous current takes away torque the catalogue ratings would give, so the effort is what the
+board allows, not what the motor could. kt from the nominal voltage and the no-load speed leaves out the no-load
+current's voltage drop, which errs high by a few per cent. The eye pans are driven through the eye board's coupled
+version and vergence axes; its firmware holds both pan motors to the smaller of the two axes' limits.
 The gearhead's rating limits the torque on its own output shaft, and on a belted joint that shaft carries the
 motor pulley, so the rating applies before the belt stage. The belt stage then multiplies it: the joint may see
 more torque than the gearhead's rating. The belt stage is taken as lossless, and the belt's own tension rating is
@@ -23,6 +30,8 @@ from dataclasses import dataclass
 from .params import CHAIN_JOINTS, HeadParameters
 
 BELTED = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}   # joint -> its pulleys entry
+PAN_JOINTS = ("left_eye_pan", "right_eye_pan")
+PAN_CONTROL = ("eyes_version", "eyes_vergence")     # the eye board's control joints, one motor per eye
 
 
 @dataclass(frozen=True)
@@ -32,10 +41,13 @@ class DriveLimit:
     gearhead: str
     belt: float                 # belt stage ratio (1: none)
     reduction: float            # motor turns per joint turn
-    effort: float               # N m at the joint, continuous
+    effort: float               # N m at the joint, continuous, within the board's current limit
     velocity: float             # rad/s at the joint, at the motor's no-load speed
-    limited_by: str             # "motor" or "gearhead": which rating sets the effort
+    limited_by: str             # "motor", "current limit" or "gearhead": what sets the effort
     belt_pull: float            # N, the belt's working tension at that effort (0: no belt)
+    rated: float                # N m at the joint from the catalogue ratings alone (no current limit)
+    kt: float                   # N m/A, the motor's torque constant
+    current_limit_mA: float     # what the board allows the motor
 
     @property
     def velocity_deg_s(self) -> float:
@@ -55,6 +67,20 @@ def _motor_pulley_radius(params: HeadParameters, joint: str) -> float:
     return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / (2 * math.pi) / 1000.0
 
 
+def torque_constant(params: HeadParameters, motor_key: str) -> float:
+    """N m/A: kt = U / omega0, the motor's nominal voltage over its no-load speed."""
+    motor = params.purchased(motor_key)
+    return motor.num("voltage", positive=True) / (motor.num("no_load_speed_rpm", positive=True) * 2 * math.pi / 60)
+
+
+def current_limit(params: HeadParameters, joint: str) -> float:
+    """mA per motor that the board allows the joint's motor (the firmware's: rg_board.c)."""
+    joints = params.root.node("motor_control").node("joints")
+    if joint in PAN_JOINTS:
+        return min(joints.node(c).num("current_limit", positive=True) for c in PAN_CONTROL)
+    return joints.node(joint).num("current_limit", positive=True)
+
+
 def reduction(params: HeadParameters, joint: str) -> float:
     gearhead = params.purchased(params.drive(joint).text("gearhead"))
     return gearhead.num("ratio", positive=True) * belt_ratio(params, joint)
@@ -70,11 +96,19 @@ def limit(params: HeadParameters, joint: str) -> DriveLimit:
     efficiency = gear.num("efficiency", positive=True, maximum=1.0)
     rating = gear.num("continuous_torque_Nm", positive=True)
     belt = belt_ratio(params, joint)
-    through = torque * ratio * efficiency
+    kt = torque_constant(params, motor_key)
+    amps = current_limit(params, joint)
+    allowed = min(torque, kt * amps * 1e-3)
+    through = allowed * ratio * efficiency
     shaft = min(through, rating)
     pull = shaft / _motor_pulley_radius(params, joint) if joint in BELTED else 0.0
+    if through > rating:
+        by = "gearhead"
+    else:
+        by = "motor" if torque <= kt * amps * 1e-3 else "current limit"
     return DriveLimit(joint, motor_key, gear_key, belt, ratio * belt, shaft * belt,
-                      speed * 2 * math.pi / 60 / (ratio * belt), "motor" if through <= rating else "gearhead", pull)
+                      speed * 2 * math.pi / 60 / (ratio * belt), by, pull,
+                      min(torque * ratio * efficiency, rating) * belt, kt, amps)
 
 
 def limits(params: HeadParameters) -> dict[str, DriveLimit]:

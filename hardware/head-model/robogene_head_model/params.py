@@ -32,6 +32,9 @@ PURCHASED_KINDS = {
     "pin": ("diameter", "length", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
     "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),
+    # a power-off holding brake on a motor's rear shaft: static torque, coil voltage and power, the inertia of what
+    # turns with the shaft (hub and disc)
+    "brake": ("static_torque_mNm", "voltage", "power_W", "diameter", "length", "mass", "rotor_inertia_gcm2"),
 }
 
 
@@ -170,7 +173,7 @@ def _check_drives(root: Node) -> None:
     for joint in CHAIN_JOINTS:
         drive = drives.node(joint)
         for field, kind in (("motor", "motor"), ("gearhead", "gearhead"), ("encoder", "encoder"),
-                            ("joint_encoder", "joint_encoder"), ("bearing", "bearing")):
+                            ("joint_encoder", "joint_encoder"), ("bearing", "bearing"), ("brake", "brake")):
             if not drive.has(field):
                 if field in ("motor", "gearhead", "encoder"):
                     raise drive._fail(field, "missing")

@@ -70,12 +70,17 @@ def sizing_table(sizing: dict) -> str:
 
 
 def unpowered_table(data: dict) -> str:
-    rows = ["| joint | released from rest | comes to rest at (deg) | gravity torque there (N m) | "
-            "holding element needed (N m) |", "|---|---|---:|---:|---:|"]
+    rows = ["| joint | released from rest, nothing holding it | comes to rest at (deg) | gravity torque there (N m) | "
+            "holding needed (N m) | holding element | holds (N m) | margin | slips at (N m) | gearhead rating (N m) |",
+            "|---|---|---:|---:|---:|---|---:|---:|---:|---:|"]
     for r in data["joints"]:
         what = {"falls": f"falls onto its stop ({r['case']})", "settles": f"settles, a pendulum ({r['case']})",
                 "balanced": "stays: gravity has no torque about it at rest"}[r["behaviour"]]
-        rows.append(f"| {r['joint']} | {what} | {r['end_deg']:.1f} | {r['torque_at_end_Nm']:.3f} | {r['hold_Nm']:.3f} |")
+        margin = "—" if r["margin"] is None else f"{r['margin']:.2f}"
+        element = r["element"] or "none"
+        slip = f"{r['slip_Nm']:.3f}" if r["element"] else "—"
+        rows.append(f"| {r['joint']} | {what} | {r['end_deg']:.1f} | {r['torque_at_end_Nm']:.3f} | {r['hold_Nm']:.3f} | "
+                    f"{element} | {r['holding_Nm']:.3f} | {margin} | {slip} | {r['gearhead_rating_Nm']:.3f} |")
     return "\n".join(rows) + "\n"
 
 

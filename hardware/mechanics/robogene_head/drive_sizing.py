@@ -8,13 +8,15 @@ drive_sizing.payloads in the parameter file, in two load cases (with and without
   inertia  J = the largest moment of inertia beyond the joint about its axis, over the same range
   load     L = G + J x alpha, alpha the joint's acceleration under drive_sizing.accelerations
 Each is a worst case of its own, so their sum bounds the load at any pose. The drive (drive_limits: motor, gearhead
-of ratio N and efficiency eta, belt stage b) must carry it twice over:
-  motor     continuous torque x N b x eta  >=  margin x (L + J_rotor x (N b)^2 x eta x alpha)
-  gearhead  continuous rating x b          >=  margin x L
-The motor also accelerates its own rotor (rotor_inertia_gcm2), which the gear train multiplies by the square of the
-reduction; the gearhead carries the load only. Gearhead and pulley inertias are left out (a few per cent of the
-rotor's). Margin is the smaller of the two ratios capacity / demand; the build fails when it is below
-drive_sizing.margin."""
+of ratio N and efficiency eta, belt stage b) must carry it margin times over, within what the board allows:
+  motor     min(continuous torque, kt x current limit) x N b x eta  >=  margin x (L + J_rotor x (N b)^2 x eta x alpha)
+  gearhead  continuous rating x b                                    >=  margin x L
+The board's current limit (motor_control.joints.<joint>.current_limit; kt as drive_limits derives it) caps the motor's
+torque: a limit below the motor's continuous current starves the drive, and the check fails on it as on a small motor.
+The motor also accelerates its own rotor (rotor_inertia_gcm2, plus a holding brake's hub and disc where the drive
+has one), which the gear train multiplies by the square of the reduction; the gearhead carries the load only.
+Gearhead and pulley inertias are left out (a few per cent of the rotor's). Margin is the smaller of the two ratios
+capacity / demand; the build fails when it is below drive_sizing.margin."""
 from __future__ import annotations
 
 import json
@@ -26,6 +28,7 @@ import numpy as np
 from robogene_head_model import drive_limits
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, Node, ParameterError
 
+from . import holding
 from .massprops import MassProps, combine
 from .pose_search import Chain, Worst
 
@@ -49,6 +52,7 @@ class JointSizing:
     gearhead_capacity_Nm: float
     motor_margin: float
     gearhead_margin: float
+    current_limited: bool      # the board's current limit, not the motor's rating, sets the motor capacity
 
     @property
     def margin(self) -> float:
@@ -56,7 +60,9 @@ class JointSizing:
 
     @property
     def limited_by(self) -> str:
-        return "motor" if self.motor_margin <= self.gearhead_margin else "gearhead"
+        if self.motor_margin > self.gearhead_margin:
+            return "gearhead"
+        return "current limit" if self.current_limited else "motor"
 
 
 @dataclass(frozen=True)
@@ -114,9 +120,9 @@ def with_payloads(params: HeadParameters, props: dict[str, MassProps]) -> dict[s
 
 
 def _rotor_inertia(params: HeadParameters, joint: str) -> float:
-    """kg m^2."""
+    """kg m^2 turning at motor speed: the rotor, and the hub and disc of a brake on its rear shaft."""
     motor = params.purchased(params.drive(joint).text("motor"))
-    return motor.num("rotor_inertia_gcm2", positive=True) * 1e-7
+    return motor.num("rotor_inertia_gcm2", positive=True) * 1e-7 + holding.rotor_inertia(params, joint)
 
 
 def size(params: HeadParameters, props: dict[str, MassProps]) -> SizingReport:
@@ -124,25 +130,28 @@ def size(params: HeadParameters, props: dict[str, MassProps]) -> SizingReport:
     drives = {}
     for joint in CHAIN_JOINTS:   # every number read (and refused by its key) before the search
         drive = params.drive(joint)
-        motor, gear = params.purchased(drive.text("motor")), params.purchased(drive.text("gearhead"))
+        motor_key = drive.text("motor")
+        motor, gear = params.purchased(motor_key), params.purchased(drive.text("gearhead"))
         eta = gear.num("efficiency", positive=True, maximum=1.0)
         n = drive_limits.reduction(params, joint)
         accel_deg = acceleration(params, joint)
         alpha = math.radians(accel_deg)
-        drives[joint] = (accel_deg, alpha, motor.num("continuous_torque_mNm", positive=True) * 1e-3 * n * eta,
+        rated = motor.num("continuous_torque_mNm", positive=True) * 1e-3
+        allowed = drive_limits.torque_constant(params, motor_key) * drive_limits.current_limit(params, joint) * 1e-3
+        drives[joint] = (accel_deg, alpha, min(rated, allowed) * n * eta,
                          gear.num("continuous_torque_Nm", positive=True) * drive_limits.belt_ratio(params, joint),
-                         _rotor_inertia(params, joint) * n * n * eta * alpha)
+                         _rotor_inertia(params, joint) * n * n * eta * alpha, allowed < rated)
     loaded = with_payloads(params, props)
     cases = {"bare": Chain(params, props).worst(), "loaded": Chain(params, loaded).worst()}
     rows = []
     for joint in CHAIN_JOINTS:
-        accel_deg, alpha, motor_cap, gear_cap, rotor = drives[joint]
+        accel_deg, alpha, motor_cap, gear_cap, rotor, starved = drives[joint]
         worst_row = None
         for case, found in cases.items():
             gravity, inertia = found[joint]
             load = gravity.value + inertia.value * alpha
             row = JointSizing(joint, case, gravity.value, gravity.pose, inertia.value, inertia.pose, accel_deg, load,
-                              rotor, motor_cap, gear_cap, motor_cap / (load + rotor), gear_cap / load)
+                              rotor, motor_cap, gear_cap, motor_cap / (load + rotor), gear_cap / load, starved)
             if worst_row is None or row.margin < worst_row.margin:
                 worst_row = row
         rows.append(worst_row)
@@ -155,7 +164,7 @@ def format_table(report: SizingReport) -> str:
     units = ("               (worst)  (N m)  (kg m^2) (deg/s^2) (N m)  (N m)  (N m)  | capacity (N m)  |")
     lines = [f"Drive sizing: worst case over the whole range, required margin {report.required:g}", head, units]
     for j in report.joints:
-        demand = j.load_Nm + j.rotor_Nm if j.limited_by == "motor" else j.load_Nm
+        demand = j.load_Nm if j.limited_by == "gearhead" else j.load_Nm + j.rotor_Nm
         flag = "ok" if j.margin >= report.required else "TOO SMALL"
         lines.append(f"{j.joint:<14} {j.case:<7} {j.gravity_Nm:7.3f} {j.inertia_kgm2:9.5f} {j.accel_deg_s2:7.0f} "
                      f"{j.load_Nm:7.3f} {j.rotor_Nm:7.3f} {demand:7.3f} | {j.motor_capacity_Nm:6.3f} "

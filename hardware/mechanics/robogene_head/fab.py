@@ -168,12 +168,18 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         raise BuildError(str(exc)) from None
     progress.note("drive sizing: every drive within its continuous ratings, smallest margin "
                   f"{min(j.margin for j in sizing.joints):.2f} ({drive_sizing.required_margin(params):g} required)")
-    # What each joint does when the power goes, the eyes' error against the stereo budget and each joint's torque path
-    # against its drive's peak torque: reported, so that docs/fabricate.md states them from the package (none is a
-    # pass/fail check of the build yet: the design does not meet them; see there).
+    # What each joint does when the power goes, against its holding element: the table goes into the package whether
+    # or not it passes, and the build fails where the head would fall (unpowered.enforce).
     released = unpowered.analyse(params, props, {j.joint: j.gravity_Nm for j in sizing.joints})
     _write(out / "reports" / "unpowered.txt", unpowered.format_table(released) + "\n")
     _write(out / "reports" / "unpowered.json", unpowered.dumps(released))
+    try:
+        unpowered.enforce(released)
+    except unpowered.UnpoweredError as exc:
+        raise BuildError(str(exc)) from None
+    # The eyes' error against the stereo budget and each joint's torque path against its drive's peak torque:
+    # reported, so that docs/fabricate.md states them from the package (neither is a pass/fail check of the build yet:
+    # the design does not meet them; see there).
     eyes = eye_accuracy.budget(params)
     _write(out / "reports" / "eye-accuracy.txt", eye_accuracy.format_report(eyes) + "\n")
     _write(out / "reports" / "eye-accuracy.json", eye_accuracy.dumps(eyes))

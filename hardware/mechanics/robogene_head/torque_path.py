@@ -24,7 +24,6 @@ from . import torque_elements
 from .drive_sizing import required_margin
 
 ELEMENTS = ("plain", "bonded", "set_screw", "d_flat", "clamp", "belt")
-PAN_CONTROL = ("eyes_version", "eyes_vergence")   # the eye board's control joints, one motor per eye
 
 
 class TorquePathError(RuntimeError):
@@ -78,14 +77,6 @@ class TorqueReport:
         return not self.failures()
 
 
-def _current_limit(params: HeadParameters, joint: str) -> float:
-    """mA per motor that the board allows the joint's motor."""
-    joints = params.root.node("motor_control").node("joints")
-    if joint in ("left_eye_pan", "right_eye_pan"):
-        return max(joints.node(c).num("current_limit", positive=True) for c in PAN_CONTROL)
-    return joints.node(joint).num("current_limit", positive=True)
-
-
 def peak(params: HeadParameters, joint: str) -> Peak:
     drive = params.drive(joint)
     motor, gear = params.purchased(drive.text("motor")), params.purchased(drive.text("gearhead"))
@@ -93,9 +84,8 @@ def peak(params: HeadParameters, joint: str) -> Peak:
     eta = gear.num("efficiency", positive=True, maximum=1.0)
     continuous = min(motor.num("continuous_torque_mNm", positive=True) * 1e-3 * ratio * eta,
                      gear.num("continuous_torque_Nm", positive=True))
-    omega0 = motor.num("no_load_speed_rpm", positive=True) * 2 * math.pi / 60
-    kt = motor.num("voltage", positive=True) / omega0          # N m / A
-    limit = _current_limit(params, joint)
+    kt = drive_limits.torque_constant(params, drive.text("motor"))      # N m / A
+    limit = drive_limits.current_limit(params, joint)
     current = kt * limit * 1e-3 * ratio * eta
     return Peak(joint, continuous, current, kt * 1e3, limit, drive_limits.belt_ratio(params, joint))
 

@@ -66,11 +66,11 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
    {{1, 0}, {0, 1}},
    {"neck_pitch", "neck_roll"},
    {
-     {"neck_pitch", -11264, 8260, 56320, 2000,
+     {"neck_pitch", -11264, 8260, 56320, 2800,
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u,
       0, 0, 0, 0, 0, 0u},
-     {"neck_roll", -27989, 27989, 209920, 2000,
+     {"neck_roll", -27989, 27989, 209920, 1200,
       46, 1, 460, 8u, 0, 900, 300,
       1399.4666666666667f, 512u, 14u,
       0, 0, 0, 0, 0, 0u}

@@ -38,20 +38,28 @@ def gearhead_shape(params: HeadParameters, p) -> cq.Shape:
 
 
 def drive_stack(params: HeadParameters, joint: str, link: str, placement: cq.Location) -> list[Part]:
-    """Gearhead + motor + encoder of a joint's drive. In the stack frame the gearhead flange face is at z = 0,
-    the output shaft points to -z and the motor and encoder follow along +z."""
+    """Gearhead + motor (+ holding brake) + encoder of a joint's drive. In the stack frame the gearhead flange face is
+    at z = 0, the output shaft points to -z and the motor, its brake on the rear shaft and the encoder follow along
+    +z."""
     drive = params.drive(joint)
     gear, motor, enc = (params.purchased(drive.text(k)) for k in ("gearhead", "motor", "encoder"))
     z_motor = gear.num("length")
     z_enc = z_motor + motor.num("length")
-    return [
+    parts = [
         _purchased(params, f"{joint}_gearhead", drive.text("gearhead"), link, gearhead_shape(params, gear),
                    placement, DARK),
         _purchased(params, f"{joint}_motor", drive.text("motor"), link,
                    geom.cyl("z", motor.num("diameter"), 0, motor.num("length")), placement * loc(z=z_motor), STEEL),
-        _purchased(params, f"{joint}_encoder", drive.text("encoder"), link,
-                   geom.cyl("z", enc.num("diameter"), 0, enc.num("length")), placement * loc(z=z_enc), DARK),
     ]
+    if drive.has("brake"):
+        brake = params.purchased(drive.text("brake"))
+        parts.append(_purchased(params, f"{joint}_brake", drive.text("brake"), link,
+                                geom.cyl("z", brake.num("diameter", positive=True), 0, brake.num("length", positive=True)),
+                                placement * loc(z=z_enc), GREEN))
+        z_enc += brake.num("length")
+    parts.append(_purchased(params, f"{joint}_encoder", drive.text("encoder"), link,
+                            geom.cyl("z", enc.num("diameter"), 0, enc.num("length")), placement * loc(z=z_enc), DARK))
+    return parts
 
 
 def bearing(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
