@@ -154,7 +154,7 @@ def test_a_stack_pitch_no_standoff_gives_is_named(params, external, tmp_path):
     path = tmp_path / "pitch.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ParameterError, match=r"boards\.stack_pitch: 14.0 must be a standoff length plus the board "
-                                             r"thickness: standoff-M3x12-MF gives 13.6"):
+                                             r"thickness: standoff-M3x30-MF gives 31.6"):
         build_all(load(path), external)
 
 
