@@ -101,10 +101,10 @@ def test_boards_sit_in_the_bay_without_interference(params, assembly):
 @pytest.mark.timeout(600)
 def test_a_board_pushed_into_the_plate_is_caught(params, external, tmp_path):
     data = yaml.safe_load(params.path.read_text())
-    # 20 mm standoffs between the boards: the top board now reaches through the base plate
-    data["purchased"]["standoff-M3x20-MF"] = dict(data["purchased"]["standoff-M3x12-MF"], length=20)
-    data["boards"]["standoffs"]["between"] = "standoff-M3x20-MF"
-    data["boards"]["stack_pitch"] = 21.6
+    # 40 mm standoffs between the boards: the top board now reaches through the base plate
+    data["purchased"]["standoff-M3x40-MF"] = dict(data["purchased"]["standoff-M3x30-MF"], length=40)
+    data["boards"]["standoffs"]["between"] = "standoff-M3x40-MF"
+    data["boards"]["stack_pitch"] = 41.6
     path = tmp_path / "high-boards.yaml"
     path.write_text(yaml.safe_dump(data))
     moved = load(path)

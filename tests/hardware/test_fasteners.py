@@ -154,7 +154,7 @@ def test_a_stack_pitch_no_standoff_gives_is_named(params, external, tmp_path):
     path = tmp_path / "pitch.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ParameterError, match=r"boards\.stack_pitch: 14.0 must be a standoff length plus the board "
-                                             r"thickness: standoff-M3x12-MF gives 13.6"):
+                                             r"thickness: standoff-M3x30-MF gives 31.6"):
         build_all(load(path), external)
 
 
@@ -163,10 +163,10 @@ def test_a_top_screw_too_long_for_the_standoff_is_named(params, external, tmp_pa
     from robogene_head_model.params import ParameterError, load
     from robogene_head.parts import build_all
     data = yaml.safe_load(params.path.read_text())
-    data["purchased"]["iso7380-M3x16"] = dict(data["purchased"]["iso7380-M3x12"], length=16)
-    data["boards"]["standoffs"]["screw"] = "iso7380-M3x16"   # 14.4 mm past the board, the thread is 11 deep
+    data["purchased"]["iso7380-M3x35"] = dict(data["purchased"]["iso7380-M3x12"], length=35)
+    data["boards"]["standoffs"]["screw"] = "iso7380-M3x35"   # 33.4 mm past the board, the thread is 29 deep
     path = tmp_path / "screw.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ParameterError, match=r"boards\.standoffs\.screw: reaches 14.4 mm past the board into a "
-                                             r"11 mm deep female thread"):
+    with pytest.raises(ParameterError, match=r"boards\.standoffs\.screw: reaches 33.4 mm past the board into a "
+                                             r"29 mm deep female thread"):
         build_all(load(path), external)

@@ -100,7 +100,7 @@ def test_wider_mount_holes_take_material_from_the_flange(raw, tmp_path, params):
                                                         r"above the clearance"),
     ("geometry.head.tilt_motor_clamp.counterbore", 5, r"geometry\.head\.tilt_motor_clamp\.counterbore: 5 does not "
                                                       r"take the 5\.7 mm heads"),
-    ("geometry.covers.skirt_cable_exit.height", 46, r"geometry\.covers\.skirt_cable_exit\.height: 46 leaves nothing"),
+    ("geometry.covers.skirt_cable_exit.height", 96, r"geometry\.covers\.skirt_cable_exit\.height: 96 leaves nothing"),
     ("geometry.neck_base.cable_pass.from_edge", [40, 20], r"geometry\.neck_base\.cable_pass\.from_edge"),
     ("geometry.head.joins.back_side_z", [15], r"geometry\.head\.joins\.back_side_z: expected a list of 2 numbers"),
 ])

@@ -27,11 +27,12 @@ from . import (drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops,
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
-from .checks import assembly_sequence, interference, mesh, validity
+from .checks import assembly_sequence, board_bay, interference, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
 from .harness import build as harness_build
 from .harness.pinout import PinoutError
 from .mesh_solid import MeshSolidError
+from .parts import board_plugs
 from .progress import Progress
 
 MECHANICS = Path(__file__).resolve().parents[1]
@@ -211,13 +212,27 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
             f"{m.misoriented_edges} misoriented edges, {m.degenerate_faces} degenerate faces, volume {m.volume:.1f}"
             for m in bad_meshes))
 
+    # 6b. The board bay with the harness plugged in: every mated plug and its wires clear of the boards above, the
+    # standoffs and the plate (checks/board_bay.py). The plugs join the interference sweep below; they are the
+    # harness's parts, counted in the BOM with it, not parts of the assembly.
+    try:
+        plugs = board_plugs.build(params, external.board)
+    except PinoutError as exc:
+        raise BuildError(str(exc)) from None
+    bay = board_bay.check(params, parts, plugs)
+    _write(out / "reports" / "board-bay.txt", board_bay.format_report(bay) + "\n")
+    if not bay.ok:
+        raise BuildError("board-bay check failed (a mated plug without room), see " + str(out / "reports" / "board-bay.txt"))
+    progress.note(f"board bay: {len(plugs)} mated plugs, each at least {bay.minimum:g} mm from the other parts")
+
     # 7. Interference and clearance over the joint sweep (the slow step: cached on the geometry).
     inter_out = [out / "reports" / "interference.txt", out / "reports" / "interference.json"]
     # A change to the checker itself must re-run it, as a change to the geometry does.
-    inter_key = digest(geometry_key, hashlib.sha256(Path(interference.__file__).read_bytes()).hexdigest())
+    inter_key = digest(geometry_key, hashlib.sha256(Path(interference.__file__).read_bytes()).hexdigest(),
+                       [(q.part.name, shape_hash(q.part.local), _placement_key(q.part)) for q in plugs])
     if not cache.fresh("interference", inter_key, inter_out):
         poses = interference.sweep_poses(params)
-        report = interference.check(params, assembly, poses,
+        report = interference.check(params, Assembly(params, parts + [q.part for q in plugs]), poses,
                                     progress=lambda i, n: progress.step("sweep", i, n, f"pose {i + 1}"))
         minimum = params.geometry("clearances").num("minimum")
         _write(inter_out[0], interference.format_report(report, minimum) + "\n")

@@ -28,6 +28,9 @@ class Connector:
     nets: tuple[str, ...]          # by pin, 1..n; "" for a pin left open
     at: tuple[float, float]        # pin 1, board frame (mm)
     centre: tuple[float, float]    # the pins' centre, board frame (mm)
+    # The header's body as the footprint draws it on F.Fab (KiCad draws it from the maker's drawing): x0, x1, y0, y1
+    # of its outline in the board frame. The board-bay check stands the mated plug on it.
+    body: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
     @property
     def pins(self) -> int:
@@ -63,13 +66,21 @@ def connectors(pcb: Path = PCB) -> dict[str, Connector]:
             continue
         at = _get(fp, "at")
         fx, fy, rot = float(at[1]), float(at[2]), math.radians(float(at[3]) if len(at) > 3 else 0.0)
-        pads = {}
-        for pad in (e for e in fp if isinstance(e, list) and e and e[0] == "pad"):
-            px, py = (float(v) for v in _get(pad, "at")[1:3])
+        def to_board(px: float, py: float) -> tuple[float, float]:
             # KiCad turns a footprint counter-clockwise on screen, whose y points down; the STEP's y points up.
             kx = fx + px * math.cos(rot) + py * math.sin(rot)
             ky = fy - px * math.sin(rot) + py * math.cos(rot)
-            pads[str(pad[1])] = (round(kx - cx, 4), round(cy - ky, 4))
+            return round(kx - cx, 4), round(cy - ky, 4)
+
+        pads = {}
+        for pad in (e for e in fp if isinstance(e, list) and e and e[0] == "pad"):
+            pads[str(pad[1])] = to_board(*(float(v) for v in _get(pad, "at")[1:3]))
+        fab = [to_board(float(e[1]), float(e[2])) for g in fp if isinstance(g, list) and g and
+               g[0] in ("fp_line", "fp_rect") and _layer(g) == "F.Fab"
+               for e in g if isinstance(e, list) and e and e[0] in ("start", "end")]
+        if not fab:
+            raise PinoutError(f"{pcb}: {ref} has no body outline on F.Fab")
+        body = (min(x for x, _ in fab), max(x for x, _ in fab), min(y for _, y in fab), max(y for _, y in fab))
         part = parts[ref]
         n = len(part.pins)
         missing = [str(i) for i in range(1, n + 1) if str(i) not in pads]
@@ -78,7 +89,8 @@ def connectors(pcb: Path = PCB) -> dict[str, Connector]:
         cxp = sum(p[0] for p in pads.values()) / len(pads)
         cyp = sum(p[1] for p in pads.values()) / len(pads)
         nets = tuple(part.pins[str(i)] or "" for i in range(1, n + 1))
-        out[ref] = Connector(ref, part.mpn, part.description, nets, pads["1"], (round(cxp, 4), round(cyp, 4)))
+        out[ref] = Connector(ref, part.mpn, part.description, nets, pads["1"], (round(cxp, 4), round(cyp, 4)),
+                             body)
     missing = sorted(set(parts) - set(out))
     if missing:
         raise PinoutError(f"{pcb}: connectors {', '.join(missing)} of the design are not on the board")

@@ -13,7 +13,7 @@ SCREW = "iso7380-M3x12"
 # mm a shim ring must hold a retaining ring's lugs off a bearing's turning inner ring: more than a small deep-groove
 # bearing's axial play (about 0.1 mm), which lets the inner ring shift towards the ring
 LUG_GAP = 0.3
-STANDOFF = "standoff-M3x46-FF"
+STANDOFF = "standoff-M3x96-FF"
 # mm a gearhead shaft's bore runs past the shaft's end: the shaft bottoms on nothing, the gearhead's flange places it
 BORE_RUNOUT = 1.0
 UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
