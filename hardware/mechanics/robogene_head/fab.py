@@ -232,8 +232,10 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
                        [(q.part.name, shape_hash(q.part.local), _placement_key(q.part)) for q in plugs])
     if not cache.fresh("interference", inter_key, inter_out):
         poses = interference.sweep_poses(params)
+        # the plugs against the neck base's own parts are the board-bay check's (above): here only against what moves
         report = interference.check(params, Assembly(params, parts + [q.part for q in plugs]), poses,
-                                    progress=lambda i, n: progress.step("sweep", i, n, f"pose {i + 1}"))
+                                    progress=lambda i, n: progress.step("sweep", i, n, f"pose {i + 1}"),
+                                    static_checked_elsewhere=frozenset(q.part.name for q in plugs))
         minimum = params.geometry("clearances").num("minimum")
         _write(inter_out[0], interference.format_report(report, minimum) + "\n")
         _write(inter_out[1], json.dumps(interference.report_json(report, minimum), indent=1))

@@ -136,7 +136,10 @@ def _distance(s1, s2) -> float:
     return tool.Value()
 
 
-def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None) -> Report:
+def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
+          static_checked_elsewhere: frozenset[str] = frozenset()) -> Report:
+    """static_checked_elsewhere: parts whose pairs within their own link another check has measured (the mated plugs:
+    checks/board_bay.py), so the sweep measures them only against parts that move relative to them."""
     poses = poses if poses is not None else sweep_poses(params)
     fit_tol = params.geometry("clearances").num("fit_tolerance", positive=True)
     exact_below = params.geometry("clearances").num("minimum", positive=True) + 2 * MESH_DEFLECTION
@@ -146,7 +149,9 @@ def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None)
     checked = 0
     links = [p.link for p in assembly.parts]
     # Two parts of one link never move relative to each other: they are checked in the first pose only.
-    pairs_first = list(itertools.combinations(range(len(links)), 2))
+    names = [p.name for p in assembly.parts]
+    pairs_first = [(i, j) for i, j in itertools.combinations(range(len(links)), 2)
+                   if links[i] != links[j] or not {names[i], names[j]} & static_checked_elsewhere]
     pairs_moving = [(i, j) for i, j in pairs_first if links[i] != links[j]]
     for index, pose in enumerate(poses):
         if progress:
