@@ -127,8 +127,9 @@ def _variant(tmp_path, edit):
 
 
 def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
-    """Two M4 set screws hold 2 x 1112 N x 3 mm = 6.67 N m: 2.06 times pitch's peak, 1.72 times roll's. One screw
-    fewer, or two M3 (890 N each: 5.34 N m, 1.38 times roll's peak), is below the margin, and the check says which."""
+    """Two M4 set screws hold 2 x 1112 N x 3 mm = 6.67 N m: 2.06 times pitch's peak, 2.87 times roll's (its 1.2 A
+    limit). One screw fewer, or two M2 on roll (378 N each: 2.27 N m, 0.97 times its peak), is below the margin, and
+    the check says which."""
     report = torque_path.analyse(params)
     for joint in ("neck_pitch", "neck_roll"):
         (element,) = [e for e in report.elements if e.joint == joint]
@@ -143,11 +144,9 @@ def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
     with pytest.raises(torque_path.TorquePathError, match=r"neck_pitch\[0\] set_screw \(3\.336 of 3\.234 N m\)"):
         torque_path.enforce(weak)
 
-    def m3(data):
-        data["purchased"]["iso4029-M3x4"] = {"kind": "set_screw", "diameter": 3, "length": 4, "holding_force_N": 890,
-                                             "mass": 0.0002}
-        data["torque_paths"]["neck_roll"][0]["screw"] = "iso4029-M3x4"
-    smaller = torque_path.analyse(_variant(tmp_path, m3))
+    def m2(data):
+        data["torque_paths"]["neck_roll"][0]["screw"] = "iso4029-M2x3"
+    smaller = torque_path.analyse(_variant(tmp_path, m2))
     assert [e.joint for e in smaller.failures()].count("neck_roll") == 1
     assert "neck_pitch" not in [e.joint for e in smaller.failures()]
 

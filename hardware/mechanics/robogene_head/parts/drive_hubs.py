@@ -21,6 +21,7 @@ from .. import geom
 from .base import loc
 
 _AXES = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}
+LAND_DEPTH = 0.5   # mm: the flat land milled at each set screw's mouth, below the hub's round surface
 
 
 @dataclass(frozen=True)
@@ -57,6 +58,25 @@ class Hub:
         """The set screws' threads, drawn at the nominal diameter from the bore out through the hub."""
         return [self._radial(d, self.screw_diameter, 0.0, self.diameter / 2 + 1) for d in self.directions]
 
+    def lands(self) -> list[cq.Shape]:
+        """A flat land LAND_DEPTH deep across the hub at each tapped hole's mouth, SCREW + 2 wide along the joint
+        axis: the drill and tap start square on it, and the hole opens in a plane, so its drawing shows a circle."""
+        out = []
+        c = self.centre()
+        along = "xyz".index(self.axis)
+        for d in self.directions:
+            k = "xyz".index(d)
+            lo, hi = [0.0] * 3, [0.0] * 3
+            for i in range(3):
+                if i == k:
+                    lo[i], hi[i] = c[i] + self.diameter / 2 - LAND_DEPTH, c[i] + self.diameter / 2 + 1
+                elif i == along:
+                    lo[i], hi[i] = c[i] - (self.screw_diameter + 2) / 2, c[i] + (self.screw_diameter + 2) / 2
+                else:
+                    lo[i], hi[i] = c[i] - self.diameter / 2 - 1, c[i] + self.diameter / 2 + 1
+            out.append(geom.box(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]))
+        return out
+
     def access_holes(self, outer: dict[str, float]) -> list[cq.Shape]:
         """Holes through the wall the hub turns in, one along each screw from the hub out to the wall's face at
         outer[direction], for the screw and its hex key."""
@@ -86,7 +106,7 @@ def hub(params: HeadParameters, joint: str, axis: str, at: tuple[float, float], 
     diameter = g.num("diameter", positive=True)
     length = screw.num("length", positive=True)
     # the screw's socket end, edge included, stays inside the hub, which turns close to the wall around it
-    if math.hypot(shaft / 2 + length, screw.num("diameter") / 2) > diameter / 2:
+    if math.hypot(shaft / 2 + length, screw.num("diameter") / 2) > diameter / 2 - LAND_DEPTH:
         raise ParameterError(f"{where}.diameter: the {screw_key}s on the {shaft:g} mm shaft stand out of a "
                              f"{diameter:g} mm hub")
     directions = j.raw("directions")

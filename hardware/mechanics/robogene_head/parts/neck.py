@@ -231,7 +231,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     # The rear lug carries no bearing: the roll gearhead's own bearings are the roll shaft's fixed bearing.
     stage = geom.cut(stage,
                      geom.cyl("y", gear.num("shaft_diameter"), hub.tip - BORE_RUNOUT, y_out + 1),
-                     *hub.tapped_holes(),
+                     *hub.tapped_holes(), *hub.lands(),
                      geom.cyl("x", shaft_hole(params, "neck_roll"), -x_out - 1, -span / 2 + 1, (0, zr)),
                      *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
                      *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws])
@@ -299,7 +299,7 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
     at = loc(z=zy - yaw_pulley_drop(params))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
-                     *hub.tapped_holes(),
+                     *hub.tapped_holes(), *hub.lands(),
                      *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)])
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     screw = mounts.joint_set_screw(params)
