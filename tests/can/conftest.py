@@ -93,7 +93,7 @@ def cpp(build_dir):
 @pytest.fixture(scope="session")
 def property_tool(build_dir):
     """The runtime's Property ini reader (runtime/devices/src/dev/property*.cpp) in a small program."""
-    src = ROOT / "runtime" / "src"
+    src = ROOT / "runtime" / "devices" / "src"
     bottle = ROOT / "runtime" / "bottle" / "src"
     sources = [HERE / "property_tool.cpp", *sorted(bottle.glob("*.cpp")),
                src / "dev" / "property.cpp", src / "dev" / "property_sources.cpp", src / "dev" / "searchable.cpp"]
