@@ -4,25 +4,18 @@
 the 61800's inner ring, which turns while the ring stands still. The seat refuses a design without the shim, with a
 shim too thin to hold them off, or with one whose bore rubs the inner ring."""
 import pytest
-import yaml
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import ParameterError
 from robogene_head.parts import neck
+
+from param_variants import edited
 
 
 def _distance(a, b) -> float:
     d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
     d.Perform()
     return d.Value()
-
-
-def _variant(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
 
 
 @pytest.fixture(scope="module")
@@ -55,12 +48,12 @@ def _drop_spacer(d):
 ])
 def test_a_ring_that_can_rub_the_inner_ring_is_refused(tmp_path, edit, message):
     with pytest.raises(ParameterError, match=message):
-        neck.build(_variant(tmp_path, edit))
+        neck.build(edited(tmp_path, edit))
 
 
 def test_a_bearing_whose_inner_ring_the_lugs_clear_needs_no_shim(tmp_path):
     def edit(d):
         _drop_spacer(d)
         d["purchased"]["skf-61800-2RS"].update(inner_ring_outside=10.5)
-    names = {p.name for p in neck.build(_variant(tmp_path, edit))}
+    names = {p.name for p in neck.build(edited(tmp_path, edit))}
     assert "neck_pitch_bearing_ring" in names and "neck_pitch_bearing_spacer" not in names

@@ -15,7 +15,9 @@ from robogene_head import sequence, threads, torque_path
 from robogene_head.assembly import Assembly
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head.parts import neck
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load, parse
+from robogene_head_model.params import DEFAULT_PATH, ParameterError, parse
+
+from param_variants import edited
 
 STAGES = {"neck_pitch": ("neck_pitch_stage", (0.0, 1.0, 0.0)), "neck_roll": ("neck_roll_stage", (1.0, 0.0, 0.0))}
 
@@ -118,14 +120,6 @@ def test_the_check_sees_a_cad_that_differs_from_the_data(tmp_path, params, neck_
     assert "M3 holes declared" in disagreements(variant, neck_parts, "neck_roll")[1]
 
 
-def _variant(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
-
-
 def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
     """Two M4 set screws hold 2 x 1112 N x 3 mm = 6.67 N m: 2.06 times pitch's peak, 2.87 times roll's (its 1.2 A
     limit). One screw fewer, or two M2 on roll (378 N each: 2.27 N m, 0.97 times its peak), is below the margin, and
@@ -139,14 +133,14 @@ def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
     def one_screw(data):
         for joint in ("neck_pitch", "neck_roll"):
             data["torque_paths"][joint][0]["count"] = 1
-    weak = torque_path.analyse(_variant(tmp_path, one_screw))
+    weak = torque_path.analyse(edited(tmp_path, one_screw))
     assert {e.joint for e in weak.failures()} >= {"neck_pitch", "neck_roll"}
     with pytest.raises(torque_path.TorquePathError, match=r"neck_pitch\[0\] set_screw \(3\.336 of 3\.234 N m\)"):
         torque_path.enforce(weak)
 
     def m2(data):
         data["torque_paths"]["neck_roll"][0]["screw"] = "iso4029-M2x3"
-    smaller = torque_path.analyse(_variant(tmp_path, m2))
+    smaller = torque_path.analyse(edited(tmp_path, m2))
     assert [e.joint for e in smaller.failures()].count("neck_roll") == 1
     assert "neck_pitch" not in [e.joint for e in smaller.failures()]
 

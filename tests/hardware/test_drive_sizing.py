@@ -19,16 +19,10 @@ from robogene_head.kinematics import rotation
 from robogene_head.pose_search import GRAVITY, Chain
 from robogene_head.progress import Progress
 
+from param_variants import edited_file
+
 # A sizing searches the whole range of every joint: seconds on an idle 2-core machine, minutes on a shared one.
 HEAVY = pytest.mark.timeout(900)
-
-
-def _copy(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return path
 
 
 def _point(mass, at):
@@ -125,7 +119,7 @@ def test_the_motor_capacity_is_what_the_current_limit_allows(params, link_props)
 
 @HEAVY
 def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
-    heavier = load(_copy(tmp_path, lambda d: d["drive_sizing"]["payloads"][0].update(mass=1.2)))
+    heavier = load(edited_file(tmp_path, lambda d: d["drive_sizing"]["payloads"][0].update(mass=1.2)))
     base = {j.joint: j for j in drive_sizing.size(params, link_props).joints}
     more = {j.joint: j for j in drive_sizing.size(heavier, link_props).joints}
     assert more["neck_pitch"].load_Nm > base["neck_pitch"].load_Nm
@@ -141,7 +135,7 @@ def test_the_payload_adds_to_the_load(params, link_props, tmp_path):
     (lambda d: d["motor_control"]["joints"]["neck_pitch"].update(current_limit=2000), "neck_pitch", "current limit"),
 ])
 def test_an_undersized_drive_is_refused_with_the_table(params, link_props, tmp_path, edit, joint, limited):
-    report = drive_sizing.size(load(_copy(tmp_path, edit)), link_props)
+    report = drive_sizing.size(load(edited_file(tmp_path, edit)), link_props)
     assert not report.ok
     bad = {j.joint: j for j in report.failures()}
     assert joint in bad and bad[joint].limited_by == limited
@@ -157,7 +151,7 @@ def test_the_build_stops_on_an_undersized_drive(fab, params, tmp_path):
     """The whole build, from a copy of the package's caches, with a pitch motor a fifth as strong."""
     out = tmp_path / "fab"
     shutil.copytree(fab, out, ignore=shutil.ignore_patterns("drawings", "renders", "assembly", "bom", "electronics"))
-    path = _copy(tmp_path, lambda d: d["purchased"][d["drives"]["neck_pitch"]["motor"]].update(
+    path = edited_file(tmp_path, lambda d: d["purchased"][d["drives"]["neck_pitch"]["motor"]].update(
         continuous_torque_mNm=d["purchased"][d["drives"]["neck_pitch"]["motor"]]["continuous_torque_mNm"] / 5))
     board = json.loads((fab / "manifest.json").read_text())["board_step"]["path"]
     with pytest.raises(fab_mod.BuildError, match=r"drives below the required margin 1\.5: neck_pitch"):
@@ -176,6 +170,6 @@ def test_the_build_stops_on_an_undersized_drive(fab, params, tmp_path):
      r"purchased\.faulhaber-1717T012SR\.rotor_inertia_gcm2: missing"),
 ])
 def test_bad_sizing_data_is_named(link_props, tmp_path, edit, message):
-    path = _copy(tmp_path, edit)
+    path = edited_file(tmp_path, edit)
     with pytest.raises(ParameterError, match=f"^{path}: {message}$"):
         drive_sizing.size(load(path), link_props)

@@ -10,7 +10,9 @@ from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import geom
 from robogene_head.parts import eye_hubs, eyes
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import ParameterError
+
+from param_variants import edited
 
 PANS = (("left", "left_eye_pan"), ("right", "right_eye_pan"))
 
@@ -72,14 +74,6 @@ def test_the_hub_is_the_flats_the_data_rates(params, placed, side, joint):
     assert _distance(hub, cup) < 0.01 and hub.intersect(cup).Volume() < 1e-3
 
 
-def _copy(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
-
-
 @pytest.mark.parametrize("hub, where", [
     ({"neck_diameter": 10}, r"geometry\.eyes\.hub\.neck_diameter: 10 leaves a 3\.5 mm wall"),
     ({"head_height": 6}, r"geometry\.eyes\.hub\.head_height: the hub's head reaches"),
@@ -87,6 +81,6 @@ def _copy(tmp_path, edit):
     ({"flat_depth": 6}, r"geometry\.eyes\.hub\.flat_depth: 6 on a 12 mm head"),
 ])
 def test_a_hub_that_cannot_be_built_is_named(tmp_path, hub, where):
-    params = _copy(tmp_path, lambda d: d["geometry"]["eyes"]["hub"].update(hub))
+    params = edited(tmp_path, lambda d: d["geometry"]["eyes"]["hub"].update(hub))
     with pytest.raises(ParameterError, match=where):
         eyes.build(params)

@@ -15,13 +15,7 @@ from robogene_head.progress import Progress
 from robogene_head_model import drive_limits
 from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 
-
-def _copy(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return path
+from param_variants import edited_file
 
 
 def _point(mass, at):
@@ -76,7 +70,7 @@ def test_the_design_holds_pitch_and_roll_with_margin(params):
      r"neck_roll \(slips at 8\.945 N m, gearhead 4\.500\)"),
 ])
 def test_a_missing_weak_or_overstrong_brake_is_refused_with_the_table(tmp_path, edit, joint, message):
-    rows = unpowered.analyse(load(_copy(tmp_path, edit)), PROPS, WORST)
+    rows = unpowered.analyse(load(edited_file(tmp_path, edit)), PROPS, WORST)
     assert not {r.joint: r for r in rows}[joint].ok
     with pytest.raises(unpowered.UnpoweredError, match=f"^unpowered: {message}\n") as err:
         unpowered.enforce(rows)
@@ -92,7 +86,7 @@ def test_a_missing_weak_or_overstrong_brake_is_refused_with_the_table(tmp_path, 
      r"purchased\.spec-brake-23-12V-8mNm\.static_torque_mNm: missing"),
 ])
 def test_bad_brake_data_is_named(tmp_path, edit, message):
-    path = _copy(tmp_path, edit)
+    path = edited_file(tmp_path, edit)
     with pytest.raises(ParameterError, match=f"^{path}: {message}"):
         load(path)
 
@@ -133,7 +127,7 @@ def test_the_build_stops_on_a_head_that_would_fall(fab, tmp_path):
     """The whole build, from a copy of the package's caches, with a pitch brake a quarter as strong."""
     out = tmp_path / "fab"
     shutil.copytree(fab, out, ignore=shutil.ignore_patterns("drawings", "renders", "assembly", "bom", "electronics"))
-    path = _copy(tmp_path, lambda d: d["purchased"][d["drives"]["neck_pitch"]["brake"]].update(static_torque_mNm=10))
+    path = edited_file(tmp_path, lambda d: d["purchased"][d["drives"]["neck_pitch"]["brake"]].update(static_torque_mNm=10))
     board = json.loads((fab / "manifest.json").read_text())["board_step"]["path"]
     with pytest.raises(fab_mod.BuildError, match=r"^unpowered: neck_pitch \(holds 0\.660 of "):
         fab_mod.build(out, path, [], None, Progress(), board_step=board)

@@ -16,18 +16,12 @@ from robogene_head.assembly import Assembly
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head.checks import interference
 from robogene_head.parts import eyes, mounts, neck
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load, parse
+from robogene_head_model.params import ParameterError, parse
+
+from param_variants import edited
 
 # joint -> (the builder that draws its joint pulley, the part whose shaft the pulley sits on)
 JOINTS = {"neck_yaw": (neck.build, "neck_roll_stage"), "eyes_tilt": (eyes.build, "eyes_tilt_frame")}
-
-
-def _load(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
 
 
 def _joint_side(params, joint):
@@ -99,11 +93,11 @@ def test_a_hub_drawn_with_one_screw_no_longer_matches_the_data(tmp_path):
     """The comparison sees a difference: the CAD with one set screw in the yaw hub, the data still saying two."""
     def one_screw(data):
         data["geometry"]["pulleys"]["joint_hub"]["set_screw_angles"]["yaw"] = [0]
-    assert mismatches(_load(tmp_path, one_screw), "neck_yaw") == ["count 2, the CAD draws 1"]
+    assert mismatches(edited(tmp_path, one_screw), "neck_yaw") == ["count 2, the CAD draws 1"]
 
     def wider_bore(data):
         next(e for e in data["torque_paths"]["eyes_tilt"] if e["at"] == "joint")["shaft"] = 8
-    assert mismatches(_load(tmp_path, wider_bore), "eyes_tilt") == ["shaft 8, the pulley's bore is 6"]
+    assert mismatches(edited(tmp_path, wider_bore), "eyes_tilt") == ["shaft 8, the pulley's bore is 6"]
 
 
 # A weaker set screw for the variants: an M2 taken, like the M3, at the next smaller inch size of the same table
@@ -128,7 +122,7 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
             def edit(data, joint=joint, weaken=weaken):
                 data["purchased"]["iso4029-M2x3"] = M2
                 weaken(next(e for e in data["torque_paths"][joint] if e["at"] == "joint"))
-            weak = torque_path.analyse(_load(tmp_path, edit))
+            weak = torque_path.analyse(edited(tmp_path, edit))
             failed = [e for e in weak.failures() if e.joint == joint and e.at == "joint"]
             assert len(failed) == 1, (joint, weak.elements)
             with pytest.raises(torque_path.TorquePathError, match=rf"{joint}\[2\]"):
@@ -149,7 +143,7 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
 ])
 def test_a_wrong_joint_hub_is_named(tmp_path, edit, message):
     with pytest.raises(ParameterError, match=message):
-        eyes.build(_load(tmp_path, edit))
+        eyes.build(edited(tmp_path, edit))
 
 
 def _yaw_set_screws_reached(params, angles):
@@ -187,4 +181,4 @@ def test_a_yaw_hub_longer_than_the_room_above_the_roll_stage_is_named(tmp_path):
     def long_hub(data):
         data["geometry"]["pulleys"]["joint_hub"]["length"] = 6
     with pytest.raises(ParameterError, match=r"geometry\.pulleys\.joint_hub\.length: 6 reaches into the roll stage"):
-        neck.build(_load(tmp_path, long_hub))
+        neck.build(edited(tmp_path, long_hub))

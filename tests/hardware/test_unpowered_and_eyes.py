@@ -7,25 +7,18 @@ import math
 
 import numpy as np
 import pytest
-import yaml
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import eye_accuracy, unpowered
 from robogene_head.massprops import MassProps
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import eye_stops
+
+from param_variants import edited_file
 
 
 def _point(mass, at):
     return MassProps(mass, np.array(at, dtype=float), np.zeros((3, 3)))
-
-
-def _copy(tmp_path, edit):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return path
 
 
 @pytest.mark.timeout(600)
@@ -33,7 +26,7 @@ def test_a_mass_above_the_neck_falls_and_one_below_the_tilt_axis_settles(params,
     """No payload: a point 1 mm in front of the head frame's axis and 60 mm up topples pitch forward (to the
     limit it leans towards: positive pitch raises the front, so down is negative), while a point hanging under
     the tilt axis, 5 mm forward of it, settles where it hangs straight down: tilt = -asin... = -atan(5/40)."""
-    bare = load(_copy(tmp_path, lambda d: d["drive_sizing"].update(payloads=[])))
+    bare = load(edited_file(tmp_path, lambda d: d["drive_sizing"].update(payloads=[])))
     props = {"head_frame": _point(1.0, [1, 0, 60]), "eyes_tilt_link": _point(0.1, [5, 0, -40])}
     rows = {r.joint: r for r in unpowered.analyse(bare, props, {j: 1.0 for j in bare.joints})}
     pitch = bare.joints["neck_pitch"]
@@ -75,7 +68,7 @@ def test_the_eye_budget_from_the_parameters(params):
 
 
 def test_a_backlash_free_drive_meets_the_budget(tmp_path):
-    path = _copy(tmp_path, lambda d: d["purchased"]["faulhaber-16-7-43"].update(backlash_deg=0))
+    path = edited_file(tmp_path, lambda d: d["purchased"]["faulhaber-16-7-43"].update(backlash_deg=0))
     e = eye_accuracy.budget(load(path))
     assert e.ok and e.depth_mm < 5
 
@@ -110,7 +103,7 @@ def test_the_lug_strikes_its_pin_at_the_stop(params, assembly, joint, side):
 @pytest.mark.timeout(900)
 def test_stops_inside_the_range_are_refused(params, external, tmp_path):
     from robogene_head.parts import build_all
-    path = _copy(tmp_path, lambda d: d["homing"]["left_eye_pan"].update(stops_deg=[-56.5, 50]))
+    path = edited_file(tmp_path, lambda d: d["homing"]["left_eye_pan"].update(stops_deg=[-56.5, 50]))
     with pytest.raises(ParameterError, match=r"homing\.left_eye_pan\.stops_deg: expected lower stop < -52\.5 and "
                                              r"upper stop > 52\.5"):
         build_all(load(path), external)
