@@ -18,6 +18,11 @@ def eye_cup(params: HeadParameters):
     r, front = e.num("cup_radius", positive=True), e.num("cup_front_cut", positive=True)
     cam = params.purchased(params.root.node("cameras").text("model"))
     w, h, t = cam.num("board_width"), cam.num("board_height"), cam.num("thickness")
+    # the cup first: what sits in it (the board, the hub below it) is placed from its radius
+    corner = ((w / 2) ** 2 + (h / 2) ** 2 + t ** 2) ** 0.5
+    if corner > r - 1:
+        raise ParameterError(f"{params.path}: geometry.eyes.cup_radius: {r} leaves under 1 mm of wall around the "
+                             f"camera board corners (they reach {corner:.1f} mm)")
     # Poles on x, both cut flat: the front face carries the lens, the back face is the print bed side.
     back = r - 1.5
     cup = geom.cut(geom.sphere(r, poles="x"), geom.box(front, r + 1, -r - 1, r + 1, -r - 1, r + 1),
@@ -26,14 +31,10 @@ def eye_cup(params: HeadParameters):
                    geom.box(-r - 1, 0, -w / 2, w / 2, -h / 2, h / 2),              # board pocket, open behind
                    geom.cyl("x", cam.num("lens_diameter"), -0.5, front + 1),       # lens window
                    *eye_hubs.cup_cuts(params, -r - e.num("gap", positive=True), r))
-    corner = ((w / 2) ** 2 + (h / 2) ** 2 + t ** 2) ** 0.5
     floor = eye_hubs.levels(params, -r - e.num("gap", positive=True))[2]
     if floor > -h / 2 - 1:
         raise ParameterError(f"{params.path}: geometry.eyes.hub.head_height: the hub's head reaches z = {floor:g}, "
                              f"under 1 mm below the camera pocket (z = {-h / 2:g})")
-    if corner > r - 1:
-        raise ParameterError(f"{params.path}: geometry.eyes.cup_radius: {r} leaves under 1 mm of wall around the "
-                             f"camera board corners (they reach {corner:.1f} mm)")
     # the hard-stop lug at its back (eye_stops), hanging towards the tilt frame's plate
     cup = geom.union(cup, eye_stops.lug(params, -r - e.num("gap", positive=True)))
     return geom.single_solid(cup, "eye cup")
