@@ -11,6 +11,7 @@ from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
 from . import gearhead_screws
+from .drive_hubs import LAND_DEPTH
 
 FIXING_SCREW = "iso7380-M3x8"   # what holds a mount plate on the structure
 
@@ -200,8 +201,15 @@ def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, ou
     body = geom.union(pulley(params, teeth, bore), geom.cyl("z", bore + 2 * hub.num("wall", positive=True), z0, z1))
     thread = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
     holes = [geom.cyl("z", bore, z0 - 1, z1 + 1)]
+    # each tapped hole opens on a flat land LAND_DEPTH below the hub's round surface (as on the drive hubs): in the
+    # screw's frame x runs along the pulley's axis, y across, z radially in from the socket end
+    outer = bore / 2 + hub.num("wall")
+    inside = outer - (bore / 2 - flat_depth(params, bore) + params.purchased(joint_set_screw(params)).num("length"))
     for frame in set_screw_frames(params, joint, bore, outboard):
         holes.append(geom.cyl("z", thread, -1, hub.num("wall") + 1).moved(frame))
+        if inside >= LAND_DEPTH:
+            holes.append(geom.box(-(thread + 1) / 2, (thread + 1) / 2, -outer - 1, outer + 1,
+                                  -inside - 1, -inside + LAND_DEPTH).moved(frame))
     return geom.single_solid(geom.cut(body, *holes), f"joint pulley {joint}")
 
 
