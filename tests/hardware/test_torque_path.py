@@ -128,13 +128,15 @@ def test_a_belt_the_standard_does_not_rate_is_refused_by_its_field(profile, widt
     assert error.value.field == field
 
 
-def _xl_stage(data, belt="xl-belt-037", width=9.525, profile="XL", pitch=5.08, yaw=(14, 20), yaw_limit=550):
+def _xl_stage(data, belt="xl-belt-037", width=9.525, profile="XL", pitch=5.08, yaw=(14, 20), tilt=(14, 24),
+              yaw_limit=550):
     """The yaw and tilt stages re-rated on another belt stock (a check of the ratings only: the CAD is not rebuilt)."""
     data["purchased"][belt] = {"kind": "belt", "profile": profile, "width": width, "thickness": 2.3,
                                "tooth_height": 1.27, "mass_per_metre": 0.03}
     pulleys = data["geometry"]["pulleys"]
     pulleys.update(belt=belt, pitch_mxl=pitch)
     pulleys["yaw"] = {"motor_teeth": yaw[0], "joint_teeth": yaw[1]}
+    pulleys["tilt"] = {"motor_teeth": tilt[0], "joint_teeth": tilt[1]}
     data["motor_control"]["joints"]["neck_yaw"]["current_limit"] = yaw_limit
 
 
@@ -146,7 +148,10 @@ def test_the_belt_is_rated_by_its_profile(tmp_path):
     belt = [e for e in _joint(xl, "neck_yaw") if e.element == "belt"][0]
     d = 14 * 5.08 / math.pi / 25.4
     assert belt.capacity_Nm == pytest.approx(63.025 * d * (0.0916 - 7.07e-5 * (d * 7800 / 66 / 1000) ** 2) * LBF_IN)
-    assert belt.margin >= xl.required
+    assert belt.margin == pytest.approx(1.56, abs=0.005) and belt.margin >= xl.required
+    # the tilt stage (docs/fabricate.md, "Torque paths"): the same 14T pulley, its peak the 620 mA limit's 0.261 N m
+    tilt = [e for e in _joint(xl, "eyes_tilt") if e.element == "belt"][0]
+    assert tilt.capacity_Nm == pytest.approx(belt.capacity_Nm, rel=1e-4) and tilt.margin == pytest.approx(2.23, abs=0.005)
     mxl = torque_path.analyse(edited(tmp_path, lambda data: _xl_stage(data, width=6.4, profile="MXL", pitch=2.032)))
     assert [e for e in _joint(mxl, "neck_yaw") if e.element == "belt"][0] in mxl.failures()
 
