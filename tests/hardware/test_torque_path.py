@@ -13,6 +13,8 @@ from robogene_head import torque_elements, torque_path
 from robogene_head_model import drive_limits
 from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 
+from param_variants import edited
+
 # A set screw for the variants. The holding force is the cup-point figure the inch tables give for the nearest size
 # (#5: 200 lbf for M3, #2: 85 lbf for M2); what matters here is that the check uses it.
 SET_SCREWS = {
@@ -83,6 +85,86 @@ def test_mxl_rating_follows_iso_5299():
         torque_elements.mxl_rating(25.4, 10, 6)
     # equal pulleys: the belt wraps half of each
     assert torque_elements.teeth_in_mesh(20, 12.9, 12.9, 40) == 10
+
+
+LBF_IN = 4.4482216 * 0.0254   # N m
+
+
+def test_xl_and_l_ratings_follow_ip24():
+    """IP-24's power rating as a torque, T = 63025 HP / r: on a 1 in pitch diameter pulley at 1000 rpm an XL 037 belt
+    passes 63.025 (0.0916 - 7.07e-5) lbf in, an L 100 belt 63.025 (0.436 - 3.01e-4); stalled, 63.025 x 0.0916 and
+    63.025 x 0.436 (about 0.65 N m per inch of pitch diameter for XL). Five teeth in mesh keep 0.8 of it."""
+    xl = 63.025 * (0.0916 - 7.07e-5) * LBF_IN
+    assert torque_elements.belt_rating("XL", 25.4, 9.525, 6, 1000) == pytest.approx(xl)
+    assert torque_elements.belt_rating("XL", 25.4, 9.525, 5, 1000) == pytest.approx(0.8 * xl)
+    assert torque_elements.belt_rating("XL", 25.4, 9.525, 7, 0) == pytest.approx(63.025 * 0.0916 * LBF_IN)
+    assert torque_elements.belt_rating("XL", 25.4, 9.525, 7, 0) == pytest.approx(0.652, abs=1e-3)
+    assert torque_elements.belt_rating("L", 25.4, 25.4, 6, 1000) == pytest.approx(63.025 * (0.436 - 3.01e-4) * LBF_IN)
+    # twice the pitch diameter at half the speed: the same belt speed, twice the torque
+    assert torque_elements.belt_rating("XL", 50.8, 9.525, 6, 500) == pytest.approx(2 * xl)
+    # MXL keeps its own torque rating, whatever the speed
+    assert torque_elements.belt_rating("MXL", 25.4, 6.4, 6, 5000) == torque_elements.mxl_rating(25.4, 6.4, 6)
+
+
+def test_the_speed_term_is_in_thousands_of_rpm():
+    """The secondary sources print the speed term as (d r)^2. Read with r in rpm, a 1 in XL pulley's rating turns
+    negative above 36 rpm; with r in thousands it stays positive up to the standard's own 6500 ft/min (d r = 24828),
+    where it has lost 7.07e-5 x 24.8^2 / 0.0916 = 48 % of its stalled value. Beyond that speed the rating is refused."""
+    rpm = 6500 * 12 / math.pi - 1
+    at_limit = torque_elements.belt_rating("XL", 25.4, 9.525, 6, rpm)
+    stalled = torque_elements.belt_rating("XL", 25.4, 9.525, 6, 0)
+    assert 0 < at_limit < stalled
+    assert at_limit / stalled == pytest.approx(1 - 7.07e-5 * (rpm / 1000) ** 2 / 0.0916)
+    assert torque_elements.belt_rating("XL", 25.4, 9.525, 6, 40) > 0.99 * stalled
+    with pytest.raises(torque_elements.ElementError, match="6500 ft/min"):
+        torque_elements.belt_rating("XL", 25.4, 9.525, 6, rpm + 2)
+
+
+@pytest.mark.parametrize("profile, width, field", [("T5", 10, "profile"), ("GT2", 6, "profile"), ("XL", 6.4, "width"),
+                                                    ("L", 12.7, "width"), ("MXL", 9.525, "width")])
+def test_a_belt_the_standard_does_not_rate_is_refused_by_its_field(profile, width, field):
+    with pytest.raises(torque_elements.ElementError) as error:
+        torque_elements.belt_rating(profile, 25.4, width, 6, 100)
+    assert error.value.field == field
+
+
+def _xl_stage(data, belt="xl-belt-037", width=9.525, profile="XL", pitch=5.08, yaw=(14, 20), tilt=(14, 24),
+              yaw_limit=550):
+    """The yaw and tilt stages re-rated on another belt stock (a check of the ratings only: the CAD is not rebuilt)."""
+    data["purchased"][belt] = {"kind": "belt", "profile": profile, "width": width, "thickness": 2.3,
+                               "tooth_height": 1.27, "mass_per_metre": 0.03}
+    pulleys = data["geometry"]["pulleys"]
+    pulleys.update(belt=belt, pitch_mxl=pitch)
+    pulleys["yaw"] = {"motor_teeth": yaw[0], "joint_teeth": yaw[1]}
+    pulleys["tilt"] = {"motor_teeth": tilt[0], "joint_teeth": tilt[1]}
+    data["motor_control"]["joints"]["neck_yaw"]["current_limit"] = yaw_limit
+
+
+def test_the_belt_is_rated_by_its_profile(tmp_path):
+    """On the same 14-tooth motor pulley at the same peak, an XL 037 belt passes where an MXL belt fails: IP-24
+    dispatches on the belt stock's profile. The yaw stage at a 550 mA limit: peak 0.373 N m at the gearhead, XL 14T
+    rated 63.025 x 0.891 in x 0.0916 lbf in (six teeth in mesh, the speed term negligible at 118 rpm)."""
+    xl = torque_path.analyse(edited(tmp_path, _xl_stage))
+    belt = [e for e in _joint(xl, "neck_yaw") if e.element == "belt"][0]
+    d = 14 * 5.08 / math.pi / 25.4
+    assert belt.capacity_Nm == pytest.approx(63.025 * d * (0.0916 - 7.07e-5 * (d * 7800 / 66 / 1000) ** 2) * LBF_IN)
+    assert belt.margin == pytest.approx(1.56, abs=0.005) and belt.margin >= xl.required
+    # the tilt stage (docs/fabricate.md, "Torque paths"): the same 14T pulley, its peak the 620 mA limit's 0.261 N m
+    tilt = [e for e in _joint(xl, "eyes_tilt") if e.element == "belt"][0]
+    assert tilt.capacity_Nm == pytest.approx(belt.capacity_Nm, rel=1e-4) and tilt.margin == pytest.approx(2.23, abs=0.005)
+    mxl = torque_path.analyse(edited(tmp_path, lambda data: _xl_stage(data, width=6.4, profile="MXL", pitch=2.032)))
+    assert [e for e in _joint(mxl, "neck_yaw") if e.element == "belt"][0] in mxl.failures()
+
+
+@pytest.mark.parametrize("edit, where", [
+    (lambda data: _xl_stage(data, profile="T5"), r"purchased\.xl-belt-037\.profile: unknown belt profile 'T5'"),
+    (lambda data: _xl_stage(data, width=6.35), r"purchased\.xl-belt-037\.width: a 6\.35 mm XL belt"),
+    (lambda data: _xl_stage(data, pitch=2.032), r"geometry\.pulleys\.pitch_mxl: 2\.032 mm is not the pitch of the XL"),
+    (lambda data: data["purchased"]["mxl-belt-6mm"].pop("profile"), r"purchased\.mxl-belt-6mm\.profile: missing"),
+])
+def test_a_belt_the_check_cannot_rate_is_named(tmp_path, edit, where):
+    with pytest.raises(ParameterError, match=where):
+        torque_path.analyse(edited(tmp_path, edit))
 
 
 def test_the_drive_peak_is_its_continuous_rating_or_what_the_current_limit_allows(params):

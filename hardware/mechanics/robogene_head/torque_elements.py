@@ -15,9 +15,14 @@ The models, each the usual machine-design estimate, conservative where a choice 
   clamp      a split hub clamped by n screws, each at its assembly preload F_M (VDI 2230: 90 % of the yield stress at
              the thread's stress section under tension and thread torque): T = mu n F_M d (each screw presses both
              half-shells on the shaft; the friction acts at d/2 on both).
-  belt       an MXL belt stage: the torque rating of ANSI/RMA IP-24 and ISO 5299 for the small pulley,
-             Qr = Kz d (a - b d^2) lbf in, d its pitch diameter in inches, (a, b) by belt width, Kz by the teeth in
-             mesh on it."""
+  belt       a trapezoidal timing belt stage, rated by ANSI/RMA IP-24 (ISO 5295, 5296, 5299; IS 9804) at its small
+             pulley, d the pulley's pitch diameter in inches, Kz by the teeth in mesh on it:
+               MXL        a torque rating, Qr = Kz d (a - b d^2) lbf in, (a, b) by belt width;
+               XL, L      a power rating at the profile's base width, HP = Kz d (r/1000) (a - b (d r/1000)^2), r the
+                          faster shaft's rpm; as a torque, T = 63025 HP / r = 63.025 Kz d (a - b (d r/1000)^2) lbf in.
+             The secondary sources print the speed term as (d r)^2; read with r in rpm it makes every rating negative
+             above about 36 rpm on a one-inch pulley, so r is in thousands of rpm there as in the first factor (the
+             reading that keeps the rating positive up to the standard's own limit of 6500 ft/min)."""
 from __future__ import annotations
 
 import math
@@ -36,11 +41,23 @@ COARSE_PITCH = {1.6: 0.35, 2.0: 0.4, 2.5: 0.45, 3.0: 0.5, 4.0: 0.7, 5.0: 0.8, 6.
 MXL_RATING = {0.12: (1.13, 1.38e-3), 0.19: (1.88, 2.30e-3), 0.25: (2.63, 3.21e-3)}
 MXL_TEETH_IN_MESH = {6: 1.0, 5: 0.8, 4: 0.6, 3: 0.4, 2: 0.2}
 
+# ANSI/RMA IP-24, ISO 5296: pitch (mm) of the trapezoidal profiles this library rates; for the power-rated ones the
+# base width (in) the rating holds at and the coefficients (a, b) above. IP-24 gives no factor for other widths here,
+# so a belt of any other width is refused rather than scaled.
+BELT_PITCH_MM = {"MXL": 2.032, "XL": 5.08, "L": 9.525}
+POWER_RATING = {"XL": (0.38, 0.0916, 7.07e-5), "L": (1.00, 0.436, 3.01e-4)}
+MAX_SURFACE_SPEED_FPM = 6500.0   # IP-24: the ratings hold up to this pulley surface speed
+
 VDI_UTILISATION = 0.9   # VDI 2230: a screw is tightened to 90 % of its yield under tension and thread torque
 
 
 class ElementError(ValueError):
-    """Numbers no model of this library covers; the caller names the parameter."""
+    """Numbers no model of this library covers; the caller names the parameter (`field`, where the error is about
+    one of the belt's own fields: its profile or width)."""
+
+    def __init__(self, message: str, field: str = ""):
+        super().__init__(message)
+        self.field = field
 
 
 def plain() -> float:
@@ -101,13 +118,47 @@ def teeth_in_mesh(small_teeth: int, small_pitch_d: float, large_pitch_d: float, 
     return math.floor(small_teeth * wrap / (2 * math.pi) + 1e-9)
 
 
+def mesh_factor(in_mesh: int) -> float:
+    """IP-24's Kz: the share of the rating a stage with this many teeth in mesh on its small pulley keeps."""
+    return 1.0 if in_mesh >= 6 else MXL_TEETH_IN_MESH.get(in_mesh, 0.0)
+
+
 def mxl_rating(small_pitch_d: float, belt_width: float, in_mesh: int) -> float:
     """N m at the small pulley."""
     width_in = belt_width / MM_PER_IN
     row = min(MXL_RATING, key=lambda w: abs(w - width_in))
     if abs(row - width_in) > 0.01:
-        raise ElementError(f"a {belt_width:g} mm MXL belt: ISO 5299 rates 3.0, 4.8 and 6.4 mm (0.12, 0.19, 0.25 in)")
+        raise ElementError(f"a {belt_width:g} mm MXL belt: ISO 5299 rates 3.0, 4.8 and 6.4 mm (0.12, 0.19, 0.25 in)",
+                           "width")
     a, b = MXL_RATING[row]
-    kz = 1.0 if in_mesh >= 6 else MXL_TEETH_IN_MESH.get(in_mesh, 0.0)
     d = small_pitch_d / MM_PER_IN
-    return kz * d * (a - b * d * d) * N_PER_LBF * MM_PER_IN / 1000.0
+    return mesh_factor(in_mesh) * d * (a - b * d * d) * N_PER_LBF * MM_PER_IN / 1000.0
+
+
+def power_rating(profile: str, small_pitch_d: float, belt_width: float, in_mesh: int, rpm: float) -> float:
+    """N m at the small pulley of an XL or L stage whose faster shaft turns at rpm (its fastest, for a bound)."""
+    if profile not in POWER_RATING:
+        raise ElementError(f"{profile!r} has no power rating here (known: {', '.join(POWER_RATING)})", "profile")
+    base, a, b = POWER_RATING[profile]
+    if abs(belt_width / MM_PER_IN - base) > 0.01:
+        raise ElementError(f"a {belt_width:g} mm {profile} belt: IP-24 rates {profile} at its base width, "
+                           f"{base:g} in ({base * MM_PER_IN:.1f} mm), and this library knows no factor for others",
+                           "width")
+    if rpm < 0:
+        raise ElementError(f"a negative speed, {rpm:g} rpm")
+    d = small_pitch_d / MM_PER_IN
+    if math.pi * d * rpm / 12 > MAX_SURFACE_SPEED_FPM:
+        raise ElementError(f"a {small_pitch_d:g} mm pulley at {rpm:g} rpm runs faster than the {MAX_SURFACE_SPEED_FPM:g}"
+                           f" ft/min the IP-24 ratings hold to")
+    v = d * rpm / 1000
+    lbf_in = 63.025 * mesh_factor(in_mesh) * d * (a - b * v * v)
+    return lbf_in * N_PER_LBF * MM_PER_IN / 1000.0
+
+
+def belt_rating(profile: str, small_pitch_d: float, belt_width: float, in_mesh: int, rpm: float) -> float:
+    """N m at the small pulley, by the belt's profile: MXL's torque rating or the others' power rating."""
+    if profile == "MXL":
+        return mxl_rating(small_pitch_d, belt_width, in_mesh)
+    if profile in POWER_RATING:
+        return power_rating(profile, small_pitch_d, belt_width, in_mesh, rpm)
+    raise ElementError(f"unknown belt profile {profile!r} (known: {', '.join(BELT_PITCH_MM)})", "profile")

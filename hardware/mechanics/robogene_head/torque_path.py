@@ -118,18 +118,37 @@ def _belt_centre(params: HeadParameters, joint: str) -> float:
 
 
 def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
-    """ISO 5299 rates the belt at its small pulley; the same tension gives torque in proportion to the pulley's
-    diameter at the motor pulley (at: gearhead) and the joint pulley (at: joint)."""
+    """IP-24 rates the belt at its small pulley, at the speed of the faster shaft (here the motor pulley's at the
+    gearhead's no-load speed, its fastest); the same tension gives torque in proportion to the pulley's diameter at
+    the motor pulley (at: gearhead) and the joint pulley (at: joint). The belt's profile and width are the purchased
+    stock's (geometry.pulleys.belt); its pitch must be the one the CAD draws the pulleys with."""
     if joint not in drive_limits.BELTED:
         raise item._fail("element", f"{joint} has no belt stage")
     pulleys = params.geometry("pulleys")
+    key = pulleys.text("belt")
+    stock = params.purchased(key)
+    profile = stock.text("profile")
+    if profile not in torque_elements.BELT_PITCH_MM:
+        raise stock._fail("profile", f"unknown belt profile {profile!r} (known: "
+                                     f"{', '.join(torque_elements.BELT_PITCH_MM)})")
+    pitch = pulleys.num("pitch_mxl", positive=True)
+    if abs(pitch - torque_elements.BELT_PITCH_MM[profile]) > 1e-6:
+        raise pulleys._fail("pitch_mxl", f"{pitch:g} mm is not the pitch of the {profile} belt {key} "
+                                         f"({torque_elements.BELT_PITCH_MM[profile]:g} mm)")
     node = pulleys.node(drive_limits.BELTED[joint])
     motor, joint_teeth = int(node.num("motor_teeth", positive=True)), int(node.num("joint_teeth", positive=True))
     d_motor, d_joint = _pitch_diameter(params, motor), _pitch_diameter(params, joint_teeth)
     small, d_small, d_large = min((motor, d_motor, d_joint), (joint_teeth, d_joint, d_motor))
     in_mesh = torque_elements.teeth_in_mesh(small, d_small, d_large, _belt_centre(params, joint))
-    rating = torque_elements.mxl_rating(d_small, params.purchased(pulleys.text("belt")).num("width", positive=True),
-                                        in_mesh)
+    drive = params.drive(joint)
+    rpm = (params.purchased(drive.text("motor")).num("no_load_speed_rpm", positive=True)
+           / params.purchased(drive.text("gearhead")).num("ratio", positive=True) * max(1.0, d_motor / d_joint))
+    try:
+        rating = torque_elements.belt_rating(profile, d_small, stock.num("width", positive=True), in_mesh, rpm)
+    except torque_elements.ElementError as exc:
+        if exc.field:
+            raise stock._fail(exc.field, str(exc)) from None
+        raise
     return rating * (d_motor if at == "gearhead" else d_joint) / d_small
 
 
