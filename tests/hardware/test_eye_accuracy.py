@@ -137,3 +137,16 @@ def test_the_package_reports_every_term(params, fab):
     text = (fab / "reports" / "eye-accuracy.txt").read_text()
     for term in expected["terms"]:
         assert f"  {term['name']} " in text
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda d: d["eye_accuracy"].update(homing_torque_spread=1.5), r"eye_accuracy\.homing_torque_spread: must be <= 1"),
+    (lambda d: d["eye_accuracy"].update(stop_modulus_MPa=0), r"eye_accuracy\.stop_modulus_MPa: must be > 0"),
+    (lambda d: d["purchased"]["faulhaber-16-7-43"].update(torsional_stiffness=110),
+     r"purchased\.faulhaber-16-7-43\.torsional_stiffness: expected a mapping"),
+    (lambda d: d["purchased"]["faulhaber-16-7-43"].update(hysteresis_loss_arcmin="1'"),
+     r"purchased\.faulhaber-16-7-43\.hysteresis_loss_arcmin: expected a number"),
+])
+def test_bad_budget_input_is_named(tmp_path, edit, message):
+    with pytest.raises(ParameterError, match=message):
+        eye_accuracy.budget(edited(tmp_path, edit), PEAK)
