@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""What the joints do unpowered (inverted pendulums fall, pendulums settle) and the eyes' stereo budget, against
-closed-form results; the eye-pan hard stops against the geometry (the lug meets its pin exactly at the stop)."""
+"""What the joints do unpowered (inverted pendulums fall, pendulums settle), against closed-form results; the eye-pan
+hard stops against the geometry (the lug meets its pin exactly at the stop). The eyes' stereo budget: test_eye_accuracy."""
 import json
 import math
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
-from robogene_head import eye_accuracy, unpowered
+from robogene_head import unpowered
 from robogene_head.massprops import MassProps
 from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import eye_stops
@@ -44,33 +44,6 @@ def test_the_package_reports_the_unpowered_head(fab):
     assert rows["neck_pitch"]["behaviour"] == rows["neck_roll"]["behaviour"] == "falls"
     sizing = {j["joint"]: j for j in json.loads((fab / "reports" / "drive-sizing.json").read_text())["joints"]}
     assert rows["neck_pitch"]["hold_Nm"] == pytest.approx(1.5 * sizing["neck_pitch"]["gravity_Nm"])
-
-
-def test_depth_per_vergence_is_the_derivative_of_the_geometry():
-    """Z(g) = (B/2) / tan(g/2): the slope dZ/dg at the vergence that fixates 500 mm."""
-    b, z = 68.0, 500.0
-    g = 2 * math.atan(b / 2 / z)
-    h = 1e-7
-    slope = ((b / 2) / math.tan((g - h) / 2) - (b / 2) / math.tan((g + h) / 2)) / (2 * h)
-    assert eye_accuracy.depth_per_vergence(b, z) == pytest.approx(slope, rel=1e-6)
-
-
-def test_the_eye_budget_from_the_parameters(params):
-    e = eye_accuracy.budget(params)
-    per_mm = (500 ** 2 + 34 ** 2) / 68                  # mm of depth per radian of vergence at 0.5 m
-    assert e.vergence_allowed_deg == pytest.approx(math.degrees(5 / per_mm), rel=1e-9)
-    assert e.per_eye_allowed_deg == pytest.approx(e.vergence_allowed_deg / 2)
-    gear = params.purchased(params.drive("left_eye_pan").text("gearhead"))
-    assert e.backlash_deg == gear.num("backlash_deg")
-    assert e.encoder_count_deg == pytest.approx(360 / (4 * 512 * 43))
-    assert e.depth_mm == pytest.approx(per_mm * math.radians(2 * (e.backlash_deg + e.encoder_count_deg)))
-    assert not e.ok                                      # the 16/7 spur gearheads do not meet it
-
-
-def test_a_backlash_free_drive_meets_the_budget(tmp_path):
-    path = edited_file(tmp_path, lambda d: d["purchased"]["faulhaber-16-7-43"].update(backlash_deg=0))
-    e = eye_accuracy.budget(load(path))
-    assert e.ok and e.depth_mm < 5
 
 
 def _distance(a, b) -> float:

@@ -178,12 +178,15 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         unpowered.enforce(released)
     except unpowered.UnpoweredError as exc:
         raise BuildError(str(exc)) from None
-    # The eyes' error against the stereo budget and each joint's torque path against its drive's peak torque:
-    # reported, so that docs/fabricate.md states them from the package (neither is a pass/fail check of the build yet:
-    # the design does not meet them; see there).
-    eyes = eye_accuracy.budget(params)
+    # The eyes' error against the stereo budget, term by term, and each joint's torque path against its drive's peak
+    # torque: reported, so that docs/fabricate.md states them from the package. Neither fails the build yet: the eye
+    # pans' 16/7 spur gearheads miss the budget (eye_accuracy.enforce is the check, for when a drive meets it; see
+    # docs/fabricate.md, "Eyes for stereo").
+    eyes = eye_accuracy.budget(params, {j.joint: j.load_Nm for j in sizing.joints})
     _write(out / "reports" / "eye-accuracy.txt", eye_accuracy.format_report(eyes) + "\n")
     _write(out / "reports" / "eye-accuracy.json", eye_accuracy.dumps(eyes))
+    progress.note("eye accuracy: the pan drives " + ("meet" if eyes.ok else "do NOT meet") + " the stereo budget, "
+                  "see " + str(out / "reports" / "eye-accuracy.txt"))
     torque = torque_path.analyse(params)
     _write(out / "reports" / "torque-path.txt", torque_path.format_table(torque) + "\n")
     _write(out / "reports" / "torque-path.json", torque_path.dumps(torque))

@@ -1,0 +1,128 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The angular error terms of one eye-pan drive, per eye at the joint, each split into repeatable (a per-eye
+calibration against the cameras removes it) and not repeatable (what the stereo budget counts).
+
+The pans are read from their motor encoders (no joint encoder), so every error between the motor shaft and the eye
+cup is the eye's error. A term whose number the maker does not publish is kept as unknown (deg None), never taken as
+zero: the budget cannot be shown met while one of its non-repeatable terms is unknown.
+
+Gearhead numbers read from its purchased: entry (each optional, absent = not published):
+  backlash_deg                  lost motion at reversal, no load: which flank carries depends on the path taken
+  transmission_accuracy_arcmin  one-way angular transmission error over a turn: a function of angle, repeatable
+  hysteresis_loss_arcmin        the loop left after loading to +- rated torque: depends on the torque history
+  torsional_stiffness           {T1, K1, K2} (N m, N m/rad): the wind-up under a torque, K1 up to T1, K2 beyond
+Homing against a hard stop (homing.<joint>.method: hard_stop) adds the stop's offset: at the stall the drive pushes
+the lug onto its pin with at most the board's current limit; gearhead and lug wind up under it. That wind-up is the
+same at every power-up as far as the stall torque is; its mean is calibrated with the rest, and
+eye_accuracy.homing_torque_spread of it (the stall torque's spread) is not repeatable, plus one encoder count."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from robogene_head_model import drive_limits
+from robogene_head_model.params import HeadParameters, Node, ParameterError
+
+ARCMIN = 1 / 60.0
+
+
+@dataclass(frozen=True)
+class Term:
+    name: str
+    what: str
+    deg: float | None        # per eye at the joint; None: not published, unknown
+    repeatable: bool         # True: removed by the per-eye calibration
+    source: str
+
+
+def wind_up(stiffness: Node, torque: float) -> float:
+    """rad of wind-up under torque (N m) from the maker's piecewise-linear curve (T1, K1, K2)."""
+    t1, k1 = stiffness.num("T1", positive=True), stiffness.num("K1", positive=True)
+    if torque <= t1:
+        return torque / k1
+    if not stiffness.has("K2"):
+        raise stiffness._fail("K2", f"missing: {torque:.3g} N m is beyond T1 = {t1:g} N m")
+    return t1 / k1 + (torque - t1) / stiffness.num("K2", positive=True)
+
+
+def stop_compliance(params: HeadParameters) -> float:
+    """rad per N m of the eye-pan hard stop: the printed lug on the cup's back, loaded sideways by the pin, as a
+    cantilever in bending and shear from where it leaves the cup (at its centre radius) down to the middle of its
+    contact with the pin. The pressed steel pin is some 30 times stiffer and is left out."""
+    e = params.geometry("eyes")
+    s = e.node("hard_stop")
+    r, width, depth = s.num("radius", positive=True), s.num("lug_width", positive=True), s.num("lug_depth", positive=True)
+    cup = e.num("cup_radius", positive=True)
+    plate_top = -cup - e.num("gap", positive=True)               # the tilt frame's plate, in the eye's frame
+    pin = params.purchased(s.text("pin"))
+    pin_top = plate_top + pin.num("length", positive=True) - s.num("pin_depth", positive=True)
+    lug_bottom = plate_top + s.num("lug_gap", positive=True)
+    root = -math.sqrt(cup * cup - r * r)
+    lever = root - (lug_bottom + pin_top) / 2
+    if lever <= 0 or pin_top <= lug_bottom:
+        raise ParameterError(f"{params.path}: geometry.eyes.hard_stop: the pin does not reach the lug "
+                             f"(pin top {pin_top:.2f}, lug bottom {lug_bottom:.2f} in the eye's frame)")
+    acc = params.root.node("eye_accuracy")
+    modulus = acc.num("stop_modulus_MPa", positive=True)
+    shear = modulus / (2 * (1 + acc.num("stop_poisson", positive=True, maximum=0.5)))
+    inertia = depth * width ** 3 / 12                            # bending across the lug's width, the pin's push
+    per_newton = lever ** 3 / (3 * modulus * inertia) + lever / (5 / 6 * shear * width * depth)   # mm per N
+    return per_newton / (r * r) * 1000                           # a torque T pushes T / r: rad per N m
+
+
+def homing_torque(params: HeadParameters, joint: str) -> float:
+    """N m at the joint, at most, that the drive pushes the lug onto its pin with at the stall: the board's
+    current limit through the gearhead (the homing PWM limit gives less, by the winding's resistance)."""
+    drive = params.drive(joint)
+    kt = drive_limits.torque_constant(params, drive.text("motor"))
+    eta = params.purchased(drive.text("gearhead")).num("efficiency", positive=True, maximum=1.0)
+    return kt * drive_limits.current_limit(params, joint) * 1e-3 * drive_limits.reduction(params, joint) * eta
+
+
+def terms(params: HeadParameters, joint: str, dynamic_Nm: float) -> list[Term]:
+    """The terms of one pan; dynamic_Nm: the peak torque the gearhead passes to the eye (drive sizing's load)."""
+    drive = params.drive(joint)
+    gear_key, enc_key = drive.text("gearhead"), drive.text("encoder")
+    gear = params.purchased(gear_key)
+    belt = drive_limits.belt_ratio(params, joint)
+    count = 360.0 / (4 * params.purchased(enc_key).num("lines", positive=True) * drive_limits.reduction(params, joint))
+
+    def arcmin(key: str) -> float | None:
+        return gear.num(key, minimum=0) * ARCMIN / belt if gear.has(key) else None
+
+    stiff = gear.node("torsional_stiffness") if gear.has("torsional_stiffness") else None
+    dyn = math.degrees(wind_up(stiff, dynamic_Nm)) / belt if stiff else None
+    unpublished = f"{gear_key}: not published"
+    out = [
+        Term("backlash", "gearhead backlash (lost motion at reversal)",
+             gear.num("backlash_deg", minimum=0) / belt if gear.has("backlash_deg") else None, False,
+             f"{gear_key}.backlash_deg" if gear.has("backlash_deg") else unpublished),
+        Term("transmission", "gearhead transmission error over the range", arcmin("transmission_accuracy_arcmin"), True,
+             f"{gear_key}.transmission_accuracy_arcmin" if gear.has("transmission_accuracy_arcmin") else unpublished),
+        Term("hysteresis", "gearhead hysteresis loss", arcmin("hysteresis_loss_arcmin"), False,
+             f"{gear_key}.hysteresis_loss_arcmin" if gear.has("hysteresis_loss_arcmin") else unpublished),
+        Term("wind_up", f"gearhead wind-up under the eye's peak torque ({dynamic_Nm * 1000:.2f} mN m)", dyn, False,
+             f"{gear_key}.torsional_stiffness" if stiff else f"{gear_key}: stiffness not published"),
+        Term("quantisation", "one count of the motor encoder", count, False, f"{enc_key}.lines x reduction"),
+    ]
+    homing = params.root.node("homing").node(joint)
+    method = homing.text("method")
+    if method != "hard_stop":
+        raise homing._fail("method", f"the eye budget counts hard_stop homing only, got {method!r}")
+    t_home = homing_torque(params, joint)
+    spread = params.root.node("eye_accuracy").num("homing_torque_spread", minimum=0, maximum=1)
+    lug = math.degrees(t_home * stop_compliance(params))
+    gear_home = math.degrees(wind_up(stiff, t_home)) / belt if stiff else None
+    at = f"{t_home:.3f} N m at the stall"
+    out += [
+        Term("stop_offset", f"the lug's bending on its pin, {at}", lug, True,
+             "current limit x kt x reduction x efficiency; lug cantilever (eye_accuracy.stop_*)"),
+        Term("stop_spread", f"its spread ({spread:.0%}) and one count read at the stall", spread * lug + count, False,
+             "eye_accuracy.homing_torque_spread"),
+        Term("home_wind_up", f"gearhead wind-up, {at}", gear_home, True,
+             f"{gear_key}.torsional_stiffness" if stiff else f"{gear_key}: stiffness not published"),
+        Term("home_spread", f"its spread ({spread:.0%})", None if gear_home is None else spread * gear_home, False,
+             "eye_accuracy.homing_torque_spread"),
+    ]
+    return out
