@@ -101,6 +101,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # joint's range (checks/joint_encoders.py): the table goes into the package whether or not it passes.
     encoders = joint_encoders.check(params, parts)
     _write(out / "reports" / "joint-encoders.txt", joint_encoders.format_report(encoders) + "\n")
+    _write(out / "reports" / "joint-encoders.json", json.dumps(joint_encoders.report_json(encoders), indent=1))
     if not encoders.ok:
         raise BuildError("joint-encoder check failed: " + "; ".join(encoders.failures) + ", see "
                          + str(out / "reports" / "joint-encoders.txt"))

@@ -130,6 +130,13 @@ def check(params: HeadParameters, parts) -> Report:
     return Report([measure(params, parts, joint) for joint in JOINTS])
 
 
+def report_json(report: Report) -> dict:
+    return {"joints": [{"joint": r.joint, "gap_min_mm": round(r.gap_min, 4), "gap_max_mm": round(r.gap_max, 4),
+                        "air_gap_window_mm": list(r.window), "ic_off_axis_mm": round(r.offset_max, 4),
+                        "displacement_mm": r.displacement, "ok": r.ok, "problems": r.problems}
+                       for r in report.rows]}
+
+
 def format_report(report: Report) -> str:
     lines = ["Joint encoders: the AS5048A's air gap and the IC's displacement from the magnet's axis, measured in the",
              "CAD over each joint's range (reports/joint-encoders.txt).",
