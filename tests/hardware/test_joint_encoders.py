@@ -108,6 +108,8 @@ def test_magnets_sit_in_their_pockets_and_brackets_on_their_faces(params, assemb
 @pytest.mark.parametrize("edit, where", [
     (lambda d: d["geometry"]["joint_encoders"]["joints"]["neck_pitch"].update(feet=[[0, -14], [12, -18]]),
      r"geometry\.joint_encoders\.joints\.neck_pitch\.feet\[0\]: the foot at \(0, -14\) stands under the board"),
+    (lambda d: d["geometry"]["joint_encoders"]["joints"]["neck_roll"].update(feet=[[16.5, -3.25], [16.5, 3.25]]),
+     r"geometry\.joint_encoders\.joints\.neck_roll\.feet: feet 0 and 1 are 6\.5 apart"),
     (lambda d: d["geometry"]["joint_encoders"].update(engagement=1),
      r"geometry\.joint_encoders\.mount_screw: iso7380-M3x12 is too long for the neck_pitch bracket"),
     (lambda d: d["geometry"]["joint_encoders"].update(engagement=11),

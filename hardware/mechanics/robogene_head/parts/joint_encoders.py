@@ -213,6 +213,15 @@ def bracket(params: HeadParameters, end: End) -> cq.Solid:
     if counterbore > 2 * r - 2:
         raise ParameterError(f"{params.path}: geometry.joint_encoders.foot: {2 * r:g} leaves under 1 mm of wall round "
                              f"the {counterbore:g} mm counterbores")
+    spots = feet(params, end.joint)
+    for i in range(len(spots)):
+        for k in range(i):
+            d = math.dist(spots[i], spots[k])
+            # heads that touch cannot both be turned; counterbores that just touch leave a knife edge
+            if d < mount.num("head_diameter") + 0.2 or abs(d - counterbore) < 0.2:
+                raise ParameterError(f"{params.path}: geometry.joint_encoders.joints.{end.joint}.feet: feet {k} and "
+                                     f"{i} are {d:g} apart: their screws' heads ({mount.num('head_diameter'):g}) need "
+                                     f"room and their {counterbore:g} mm counterbores must overlap or stand apart")
     tools = [geom.cyl("z", screw.num("diameter", positive=True), lv.back - 1, lv.top + 1, h) for h in holes]
     for f in feet(params, end.joint):
         tools += [geom.cyl("z", hole, end.face - 1, lv.top + 1, f), geom.cyl("z", counterbore, seat, lv.top + 1, f)]
