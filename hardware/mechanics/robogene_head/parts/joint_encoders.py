@@ -27,7 +27,6 @@ from . import purchased
 from .base import ALUMINIUM, Part, loc
 
 JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt")
-WALL = 2.0   # mm of bracket under a counterbored screw head
 
 
 @dataclass(frozen=True)
@@ -183,9 +182,10 @@ def _screw_seat(params: HeadParameters, end: End, top: float) -> float:
         raise ParameterError(f"{params.path}: geometry.joint_encoders.mount_screw: {key} is too long for the "
                              f"{end.joint} bracket ({top - end.face:g} mm tall): it would reach more than the "
                              f"{n.num('engagement'):g} mm engagement into the face")
-    if seat < end.face + WALL:
+    under = n.num("under_head", positive=True)
+    if seat < end.face + under:
         raise ParameterError(f"{params.path}: geometry.joint_encoders.mount_screw: {key} is too short for the "
-                             f"{end.joint} bracket: it leaves less than {WALL:g} mm of the foot under its head")
+                             f"{end.joint} bracket: it leaves less than {under:g} mm of the foot under its head")
     return seat
 
 
