@@ -75,6 +75,10 @@ def test_every_screw_joins_two_parts(held):
     ("neck_pitch_motor_mount", "neck_pitch_gearhead"), ("neck_roll_motor_mount", "neck_roll_gearhead"),
     ("neck_yaw_motor_mount", "neck_yaw_gearhead"), ("head_side_plate_left", "eyes_tilt_gearhead"),
     ("eyes_tilt_frame", "left_eye_pan_gearhead"), ("eyes_tilt_frame", "right_eye_pan_gearhead"),
+    # each joint encoder's board on its bracket, the bracket on the face round its shaft's end
+    *[(f"{j}_encoder_bracket", f"{j}_joint_encoder") for j in ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt")],
+    ("neck_pitch_encoder_bracket", "neck_upright_right"), ("neck_roll_encoder_bracket", "neck_pitch_front_lug"),
+    ("neck_yaw_encoder_bracket", "head_floor"), ("eyes_tilt_encoder_bracket", "head_side_plate_right"),
 ])
 def test_the_parts_the_guide_bolts_are_bolted(held, a, b):
     screws = [name for name, parts in held.items() if a in parts and b in parts]

@@ -15,13 +15,13 @@ import yaml
 
 from robogene_head_model import params as params_mod
 from robogene_head.harness import build as harness_build, drawing, pinout, plan, spans, spec
-from robogene_head.parts import eyes, head_frame, neck
+from robogene_head.parts import eyes, head_frame, joint_encoders, neck
 
 
 @pytest.fixture(scope="module")
 def parts(params):
     """The parts the harness reaches (drives, encoders, cameras): no board STEP needed."""
-    return neck.build(params) + head_frame.build(params) + eyes.build(params)
+    return neck.build(params) + head_frame.build(params) + eyes.build(params) + joint_encoders.build(params)
 
 
 def _variant(params, tmp_path, change):

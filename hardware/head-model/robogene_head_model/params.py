@@ -30,6 +30,7 @@ PURCHASED_KINDS = {
     # a headless set screw (ISO 4026..4029): holding_force_N, the maker's axial holding force at its seating torque
     "set_screw": ("diameter", "length", "holding_force_N", "mass"),
     "pin": ("diameter", "length", "mass"),
+    "magnet": ("diameter", "thickness", "mass"),
     "standoff": ("across_flats", "length", "thread", "mass"),
     "belt": ("width", "thickness", "tooth_height", "mass_per_metre"),
     # a power-off holding brake on a motor's rear shaft: static torque, coil voltage and power, the inertia of what

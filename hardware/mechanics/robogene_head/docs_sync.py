@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """The tables docs/fabricate.md carries from the fabrication package (docs_sync.py --fab DIR --out DIR).
 
-The doc holds copies of the BOM, mass, harness, drive-limit, drive-sizing, unpowered and eye-accuracy tables
+The doc holds copies of the BOM, mass, harness, drive-limit, drive-sizing, unpowered, eye-accuracy and joint-encoder tables
 between <!-- NAME:BEGIN --> and <!-- NAME:END --> markers. This script writes each table's body, read from the
 package's reports, as the file OUT/NAME; the manifest's `fabrication-tables` generator (codegen/generated-
 manifest.yaml) puts them into the doc on `make generate` and compares them on `make check-generated`.
@@ -115,6 +115,17 @@ def eyes_table(e: dict) -> str:
     return "\n".join(rows) + "\n"
 
 
+def encoders_table(data: dict) -> str:
+    rows = ["| joint | air gap, magnet to IC (mm) | datasheet window (mm) | IC off the magnet's axis (mm) | allowed (mm) |",
+            "|---|---:|---:|---:|---:|"]
+    for r in data["joints"]:
+        gap = f"{r['gap_min_mm']:.2f}" if abs(r["gap_max_mm"] - r["gap_min_mm"]) < 0.005 else \
+            f"{r['gap_min_mm']:.2f} to {r['gap_max_mm']:.2f}"
+        low, high = r["air_gap_window_mm"]
+        rows.append(f"| {r['joint']} | {gap} | {low:g} to {high:g} | {r['ic_off_axis_mm']:.3f} | {r['displacement_mm']:g} |")
+    return "\n".join(rows) + "\n"
+
+
 def blocks(fab: Path) -> dict[str, str]:
     return {"BOM": (fab / "bom" / "robogene-head-bom.md").read_text(),
             "HARNESS": harness_table(json.loads((fab / "harness" / "harness.json").read_text())),
@@ -123,7 +134,8 @@ def blocks(fab: Path) -> dict[str, str]:
             "SIZING": sizing_table(json.loads((fab / "reports" / "drive-sizing.json").read_text())),
             "UNPOWERED": unpowered_table(json.loads((fab / "reports" / "unpowered.json").read_text())),
             "TORQUE": torque_table(json.loads((fab / "reports" / "torque-path.json").read_text())),
-            "EYES": eyes_table(json.loads((fab / "reports" / "eye-accuracy.json").read_text()))}
+            "EYES": eyes_table(json.loads((fab / "reports" / "eye-accuracy.json").read_text())),
+            "ENCODERS": encoders_table(json.loads((fab / "reports" / "joint-encoders.json").read_text()))}
 
 
 def main(argv=None) -> int:

@@ -27,7 +27,7 @@ from . import (drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops,
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
-from .checks import assembly_sequence, board_bay, interference, mesh, validity
+from .checks import assembly_sequence, board_bay, interference, joint_encoders, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
 from .harness import build as harness_build
 from .harness.pinout import PinoutError
@@ -96,6 +96,15 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     if bad:
         raise BuildError("invalid solids: " + "; ".join(
             f"{c.name} (valid={c.valid}, solids={c.solids}, closed={c.closed}, volume={c.volume:.3f})" for c in bad))
+
+    # 1b. Each joint encoder's board at the AS5048A's air gap over its magnet, its IC on the magnet's axis, over the
+    # joint's range (checks/joint_encoders.py): the table goes into the package whether or not it passes.
+    encoders = joint_encoders.check(params, parts)
+    _write(out / "reports" / "joint-encoders.txt", joint_encoders.format_report(encoders) + "\n")
+    _write(out / "reports" / "joint-encoders.json", json.dumps(joint_encoders.report_json(encoders), indent=1))
+    if not encoders.ok:
+        raise BuildError("joint-encoder check failed: " + "; ".join(encoders.failures) + ", see "
+                         + str(out / "reports" / "joint-encoders.txt"))
 
     # 2. STEP per designed/purchased part, STL per printed part. The board's STEP is the electronics package's
     # own; the OpenSCAD printables' STLs are OpenSCAD's.

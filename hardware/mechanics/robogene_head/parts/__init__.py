@@ -7,13 +7,13 @@ from robogene_head_model.params import HeadParameters
 
 from ..external import ExternalGeometry
 from .base import Part
-from . import board_stack, boards, covers, eyes, face, head_frame, neck
+from . import board_stack, boards, covers, eyes, face, head_frame, joint_encoders, neck
 
 
 def build_all(params: HeadParameters, external: ExternalGeometry) -> list[Part]:
     """external: the KiCad board and the OpenSCAD face plate (robogene_head.external)."""
     parts: list[Part] = []
-    for family in (neck, head_frame, eyes, covers):
+    for family in (neck, head_frame, eyes, covers, joint_encoders):
         parts.extend(family.build(params))
     parts += face.build(params, external)
     parts += boards.build(params, external.board)

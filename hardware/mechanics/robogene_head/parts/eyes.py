@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import eye_hubs, eye_stops, gearhead_screws, mounts, purchased
+from . import eye_hubs, eye_stops, gearhead_screws, joint_encoders, mounts, purchased
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -68,7 +68,8 @@ def build(params: HeadParameters) -> list[Part]:
         geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
         geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1,                         # tilt shafts, the left one
                  hw + pulley_gap + pw + mounts.joint_hub_length(params)),             # through the pulley's hub
-        geom.cyl("y", tilt_bearing.num("bore"), -hw, -arm_out + 1),
+        # the right one stands out of the side plate for the joint encoder's magnet holder
+        geom.cyl("y", tilt_bearing.num("bore"), -hw - joint_encoders.shaft_protrusion(params), -arm_out + 1),
     )
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
     # the eye cups.

@@ -10,7 +10,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_stops
+from . import gearhead_screws, head_joins, joint_encoders, mounts, neck, purchased, tilt_stops
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
@@ -45,7 +45,8 @@ def build(params: HeadParameters) -> list[Part]:
                      *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
                      *[geom.cyl("z", m3, -ft - 1, 1, (ym + fx, fy)) for fx, fy in yaw_fixings],
                      *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(params, yaw_gear.num("diameter"),
-                                                                                    yaw_slot)])
+                                                                                    yaw_slot)],
+                     *joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_yaw"]))   # the yaw encoder's bracket
     # Left side plate in its design frame; the right plate is its mirror image.
     face_z = h.vec("face_screw_z", 2)
     stop_pins, stop_holes = tilt_stops.pins(params, inner, (tx, tz), "head_frame")
@@ -59,7 +60,10 @@ def build(params: HeadParameters) -> list[Part]:
                     *[geom.cyl("x", m3, sx1 - tap_depth, sx1 + 1, (inner + st / 2, z)) for z in face_z],
                     *joins.holes["head_side_plate"], *stop_holes)
     side = geom.single_solid(side, "side plate")
-    side_right = side.mirror("XZ")
+    # the tilt encoder's bracket screws into the right plate's outer face
+    side_right = geom.single_solid(geom.cut(side.mirror("XZ"),
+                                            *joint_encoders.face_holes(params, joint_encoders.ends(params)["eyes_tilt"])),
+                                   "right side plate")
     back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"],
                                       *tilt_clamp_back_holes(params)), "back plate")
     top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
@@ -81,8 +85,6 @@ def build(params: HeadParameters) -> list[Part]:
                           loc(tx, inner, tz, rx=-90)),
         purchased.bearing(params, "eyes_tilt_bearing_right", params.drive("eyes_tilt").text("bearing"), "head_frame",
                           loc(tx, -inner, tz, rx=90)),
-        purchased.joint_encoder(params, "neck_yaw_joint_encoder", "head_frame", loc(0, 0, 1)),
-        purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame", loc(tx, -hw - 1, tz, rx=90)),
     ]
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
     # Four M3 through slots into the floor: the plate slides along x to tension the belt.

@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import board_stack, drive_hubs, gearhead_screws, mounts, purchased
+from . import board_stack, drive_hubs, gearhead_screws, joint_encoders, mounts, purchased
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -146,7 +146,9 @@ def _base(params: HeadParameters) -> list[Part]:
                              *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
                                for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
     seat, b0, s0, g0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
-    upright_bearing = geom.cut(block, *seat, *bottom_holes)
+    # the pitch encoder's bracket screws into the right upright's outer face (turned back into the design frame)
+    encoder_holes = [t.moved(loc(rz=180)) for t in joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_pitch"])]
+    upright_bearing = geom.cut(block, *seat, *bottom_holes, *encoder_holes)
 
     parts = [
         Part("neck_base_plate", "neck_base_plate", "neck_base", "machined", geom.single_solid(plate, "plate"),
@@ -187,7 +189,6 @@ def _base(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"pitch_mount_screw_{i}", mounts.FIXING_SCREW, "neck_base",
                                      loc(fx, y_out + pt, hp - fy, rx=90)))
     parts += purchased.drive_stack(params, "neck_pitch", "neck_base", loc(0, y_out + pt, hp, rx=-90))
-    parts.append(purchased.joint_encoder(params, "neck_pitch_joint_encoder", "neck_base", loc(0, -y_out - 1, hp, rx=90)))
     return parts
 
 
@@ -234,10 +235,12 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
                      *hub.tapped_holes(), *hub.lands(),
                      geom.cyl("x", shaft_hole(params, "neck_roll"), -x_out - 1, -span / 2 + 1, (0, zr)),
                      *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
-                     *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws])
+                     *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws],
+                     *joint_encoders.shaft_cuts(params, joint_encoders.ends(params)["neck_pitch"]))
     seat, b0, s0, g0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
     front = geom.cut(geom.box(fx0, fx1, -lw / 2, lw / 2, bh / 2, zr + lw / 2), *seat,
-                     *[geom.cyl("z", 3.0, bh / 2 - 1, bh / 2 + lug_screw.num("length") - 4, c) for c in lug_screws])
+                     *[geom.cyl("z", 3.0, bh / 2 - 1, bh / 2 + lug_screw.num("length") - 4, c) for c in lug_screws],
+                     *joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_roll"]))   # the roll encoder's bracket
     parts = [Part("neck_pitch_stage", "neck_pitch_stage", "neck_pitch_link", "machined", geom.single_solid(stage, "pitch stage"),
                   material="aluminium-6082", color=ALUMINIUM, note=PITCH_STAGE_NOTE),
              Part("neck_pitch_front_lug", "neck_pitch_front_lug", "neck_pitch_link", "machined",
@@ -268,7 +271,6 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"roll_mount_screw_{i}", mounts.FIXING_SCREW, "neck_pitch_link",
                                      loc(-x_out - rt, fy, zr + fx, ry=90)))
     parts += purchased.drive_stack(params, "neck_roll", "neck_pitch_link", loc(-x_out - rt, 0, zr, ry=-90))
-    parts.append(purchased.joint_encoder(params, "neck_roll_joint_encoder", "neck_pitch_link", loc(fx1 + 1, 0, zr, ry=90)))
     return parts
 
 
@@ -300,7 +302,8 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     at = loc(z=zy - yaw_pulley_drop(params))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
                      *hub.tapped_holes(), *hub.lands(),
-                     *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)])
+                     *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)],
+                     *[t for j in ("neck_roll", "neck_yaw") for t in joint_encoders.shaft_cuts(params, joint_encoders.ends(params)[j])])
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     screw = mounts.joint_set_screw(params)
     return [

@@ -84,10 +84,21 @@ def shim(params: HeadParameters, name: str, key: str, link: str, placement: cq.L
 
 
 def joint_encoder(params: HeadParameters, name: str, link: str, placement: cq.Location, key="ams-AS5048A") -> Part:
-    """Sensor board, centred on its axis, z 0..height (the magnet faces z = 0)."""
+    """Sensor board: the origin at its holes' centre on the face that carries the IC, the PCB z 0..height, the IC's
+    package z -ic.height..0 (its face towards the magnet at z = -ic.height), at ic_at; one solid."""
     e = params.purchased(key)
-    l, w, h = e.num("length"), e.num("width"), e.num("height")
-    return _purchased(params, name, key, link, geom.box(-w / 2, w / 2, -l / 2, l / 2, 0, h), placement, GREEN)
+    l, w, h = e.num("length", positive=True), e.num("width", positive=True), e.num("height", positive=True)
+    ox, oy = e.vec("outline_at", 2)
+    ic = e.node("ic")
+    il, iw, ih = ic.num("length", positive=True), ic.num("width", positive=True), ic.num("height", positive=True)
+    ix, iy = e.vec("ic_at", 2)
+    shape = geom.union(geom.box(ox - w / 2, ox + w / 2, oy - l / 2, oy + l / 2, 0, h),
+                       geom.box(ix - iw / 2, ix + iw / 2, iy - il / 2, iy + il / 2, -ih, 0))
+    holes = e.node("holes")
+    px, py = holes.vec("pitch", 2)
+    shape = geom.cut(shape, *[geom.cyl("z", holes.num("diameter", positive=True), -1, h + 1, (sx * px / 2, sy * py / 2))
+                              for sx in (-1, 1) for sy in (-1, 1)])
+    return _purchased(params, name, key, link, geom.single_solid(shape, name), placement, GREEN)
 
 
 def camera(params: HeadParameters, name: str, key: str, link: str, placement: cq.Location) -> Part:
