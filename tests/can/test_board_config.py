@@ -439,3 +439,49 @@ def test_board_config_names_known_broadcasts(tree):
 def test_board_config_needs_its_parameter_file(tree):
     errs, _ = _idl_errors(tree, "parameters: hardware/head-parameters.yaml", "parameters: hardware/no-such.yaml")
     assert len(errs) == 1 and "cannot read the parameter file hardware/no-such.yaml (No such file or directory)" in errs[0]
+
+
+# ---- holding brakes: the firmware's has_brake from drives.<joint>.brake ------------------------
+
+def test_the_compiled_table_marks_the_braked_axes(build_dir, params):
+    """has_brake is 1 exactly on the axes whose motor carries a brake in the parameter file (pitch and roll)."""
+    program = build_dir / "print_brakes.c"
+    program.write_text("""
+#include <stdio.h>
+#include "generated/robogene_head_board_config.h"
+int main(void) {
+  for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b)
+    for (int a = 0; a < 2; ++a) printf("%s %u\\n", robogene_board_configs[b].axes[a].joint,
+                                       robogene_board_configs[b].axes[a].has_brake);
+  return 0;
+}
+""")
+    exe = build_dir / "print_brakes"
+    cmd = [CC, "-std=c99", "-Wall", "-Wextra", "-Werror", f"-I{FIRMWARE}", str(program), "-o", str(exe)]
+    result = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    run = subprocess.run([str(exe)], capture_output=True, text=True, timeout=30)
+    table = {line.split()[0]: int(line.split()[1]) for line in run.stdout.splitlines()}
+    braked = {j for j, d in params["drives"].items() if d.get("brake")}
+    assert braked == {"neck_pitch", "neck_roll"}
+    assert table == {j: int(j in braked) for j in table}
+
+
+def test_a_brake_travels_to_the_firmware_table(tree):
+    """Taking roll's brake out of the parameter file clears its has_brake; pitch keeps its own."""
+    _edit(tree, (", bearing: skf-61800-2RS, bearings: 1, brake: spec-brake-23-12V-8mNm}",
+                 ", bearing: skf-61800-2RS, bearings: 1}"))
+    header = render(tree, ["firmware-can"])["hardware/electronics/firmware/generated/robogene_head_board_config.h"]
+    rows = re.findall(r'\{"(\w+)", -?\d+,.*?(\d)u\}', header, re.S)
+    assert dict(rows) == {"neck_pitch": "1", "neck_roll": "0", "neck_yaw": "0", "eyes_tilt": "0",
+                          "eyes_version": "0", "eyes_vergence": "0"}, rows
+
+
+def test_a_brake_on_a_coupled_eye_motor_is_refused(tree):
+    """An eye pan motor serves both version and vergence: the board's brake output follows one axis."""
+    errs, text = _errors(tree, "left_eye_pan:  {motor: faulhaber-1717T012SR, gearhead: faulhaber-16-7-43, "
+                               "encoder: faulhaber-IE2-512-17}",
+                         "left_eye_pan:  {motor: faulhaber-1717T012SR, gearhead: faulhaber-16-7-43, "
+                         "encoder: faulhaber-IE2-512-17, brake: spec-brake-23-12V-8mNm}")
+    assert any("motor_control.joints.eyes_version: left_eye_pan carries a brake, but a board drives brakes only "
+               "on uncoupled axes" in e for e in errs), errs

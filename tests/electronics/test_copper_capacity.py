@@ -28,7 +28,20 @@ def chain_amps():
     return sum(j["current_limit"] for j in joints.values()) / 1000 + PARAMS["boards"]["count"] * LOGIC_A
 
 
-# (net, from part, to part, amperes): each H-bridge's supply, motor leads and return; the fused input.
+def brake_amps(axis):
+    """The largest holding-brake coil current (coil power / voltage) on board axis `axis` of any board."""
+    amps = []
+    for board in PARAMS["motor_control"]["boards"]:
+        joint = board["axes"][axis]
+        brake = PARAMS["drives"].get(joint, {}).get("brake")
+        if brake:
+            spec = PARAMS["purchased"][brake]
+            amps.append(spec["power_W"] / spec["voltage"])
+    return max(amps, default=0.0)
+
+
+# (net, from part, to part, amperes): each H-bridge's supply, motor leads and return; the fused input; each
+# brake coil's supply and return (rev D: header -> switch, and +12V to the header).
 PATHS = [
     ("/M1_OUT1", "U5", "R30", DRIVER_A), ("/M1_MA", "R30", "J20", DRIVER_A), ("/M1_OUT2", "U5", "J20", DRIVER_A),
     ("/M2_OUT1", "U7", "R40", DRIVER_A), ("/M2_MA", "R40", "J30", DRIVER_A), ("/M2_OUT2", "U7", "J30", DRIVER_A),
@@ -36,6 +49,8 @@ PATHS = [
     ("GND", "U5", "J1", DRIVER_A), ("GND", "U7", "J1", DRIVER_A),
     ("/VIN_RAW", "J1", "F1", FUSE_A), ("/VIN_FUSED", "F1", "Q1", FUSE_A),
     ("/VIN_RAW", "J1", "J5", chain_amps()), ("GND", "J1", "J5", chain_amps()),
+    ("+12V", "Q1", "J23", brake_amps(0)), ("/M1_BRAKE_N", "J23", "Q30", brake_amps(0)), ("GND", "Q30", "J1", brake_amps(0)),
+    ("+12V", "Q1", "J33", brake_amps(1)), ("/M2_BRAKE_N", "J33", "Q40", brake_amps(1)), ("GND", "Q40", "J1", brake_amps(1)),
 ]
 
 

@@ -17,7 +17,8 @@ from conftest import ROOT, SCH
 PINS_H = ROOT / "hardware" / "electronics" / "firmware" / "stm32" / "board_pins.h"
 MCU_SYMBOL = "MCU_ST_STM32G4:STM32G431KBTx"
 # Nets the firmware does not address by pin: power, the crystal (RCC takes it), reset, SWD and BOOT0 (the core).
-NOT_FIRMWARE_PINS = {"+3V3", "GND", "HSE_IN", "HSE_OUT", "NRST", "SWDIO", "SWCLK", "BOOT0"}
+# (BOOT0, PB8, is the status LED's pin once the part has started: the firmware addresses it.)
+NOT_FIRMWARE_PINS = {"+3V3", "GND", "HSE_IN", "HSE_OUT", "NRST", "SWDIO", "SWCLK"}
 DEFINE = re.compile(r"#define PIN_(\w+)\s+(\d+)u\s*//\s*P([A-G])(\d+)\b")
 
 
@@ -69,13 +70,23 @@ def test_firmware_pins_match_the_board():
 
 
 def test_a_revision_b_pin_map_is_refused():
-    """Revision B's map put M2_AEA_CS on PB5 (now AEA_MOSI): the check must name it."""
+    """Revision B's map put M2_AEA_CS on PB5 (now brake 1's gate): the check must name it."""
     rev_b = PINS_H.read_text().replace("#define PIN_M2_AEA_CS 5u  // PA5", "#define PIN_M2_AEA_CS 5u  // PB5")
-    rev_b = re.sub(r"#define PIN_AEA_MOSI .*\n", "", rev_b)
     errors = check_pin_map(pin_defines(rev_b), package_pins_of_symbol(SCH.read_text(), MCU_SYMBOL),
                            mcu_nets(design.parts()))
-    assert any("PIN_M2_AEA_CS: PB5 (package pin 28) carries 'AEA_MOSI'" in e for e in errors), errors
-    assert any("no PIN_AEA_MOSI" in e for e in errors), errors
+    assert any("PIN_M2_AEA_CS: PB5 (package pin 28) carries 'M1_BRAKE'" in e for e in errors), errors
+
+
+def test_a_revision_c_pin_map_is_refused():
+    """Revision C's map drove the LED on PA4 and MOSI on PB5, the pins that switch the brakes since rev D: a
+    firmware that still blinks PA4 would release brake 2 twice a second."""
+    rev_c = re.sub(r"#define PIN_M2_BRAKE .*\n", "#define PIN_LED 4u        // PA4  status LED\n", PINS_H.read_text())
+    rev_c = re.sub(r"#define PIN_M1_BRAKE .*\n(//.*\n|\s+//.*\n)?", "#define PIN_AEA_MOSI 5u   // PB5  SPI1_MOSI\n", rev_c)
+    errors = check_pin_map(pin_defines(rev_c), package_pins_of_symbol(SCH.read_text(), MCU_SYMBOL),
+                           mcu_nets(design.parts()))
+    assert any("PIN_LED: PA4 (package pin 9) carries 'M2_BRAKE'" in e for e in errors), errors
+    assert any("PIN_AEA_MOSI: PB5 (package pin 28) carries 'M1_BRAKE'" in e for e in errors), errors
+    assert any("no PIN_M1_BRAKE" in e for e in errors) and any("no PIN_M2_BRAKE" in e for e in errors), errors
 
 
 @pytest.mark.parametrize("line", ["#define PIN_LED 5u        // PA4  status LED"])

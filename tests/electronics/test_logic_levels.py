@@ -21,8 +21,8 @@ def test_every_digital_net_meets_its_receivers_thresholds():
     problems, checked = logic_levels.check(_parts(), pins)
     assert problems == [], "\n".join(map(str, problems))
     # the nets the review named are among the checked ones, each with its encoder-side receiver or driver
-    for net in ("AEA_CLK_5V", "M1_AEA_CS_5V", "M2_AEA_CS_5V", "AEA_MOSI_5V", "AEA_CLK", "AEA_MOSI",
-                "AEA_ENC_DO", "AEA_DO", "M1_ENC_A", "M1_QA", "M1_IN1", "CAN_TX", "CAN_RX"):
+    for net in ("AEA_CLK_5V", "M1_AEA_CS_5V", "M2_AEA_CS_5V", "AEA_MOSI_5V", "AEA_CLK",
+                "AEA_ENC_DO", "AEA_DO", "M1_ENC_A", "M1_QA", "M1_IN1", "CAN_TX", "CAN_RX", "M1_BRAKE", "M2_BRAKE"):
         assert net in checked, net
 
 
@@ -31,13 +31,15 @@ def test_the_absolute_encoders_get_every_spi_input():
 
 
 def test_mosi_idles_high():
-    """The AS5048A returns the angle for the command 0xFFFF: MOSI held high. A pull-up keeps it high while
-    the MCU's pin is still an input (reset, boot)."""
+    """The AS5048A returns the angle for the command 0xFFFF: MOSI held high. Since rev D no MCU pin drives it
+    (PB5 switches brake 1): the pull-up alone holds the level shifter's input high, and the shifter drives
+    the encoders' MOSI."""
     parts = {p.ref: p for p in _parts()}
     pullups = [p for p in parts.values() if p.lib_id == "Device:R" and set(p.pins.values()) == {"AEA_MOSI", "+3V3"}]
     assert pullups, "no pull-up from AEA_MOSI to +3V3"
-    mcu = parts["U1"]
-    assert mcu.pins["28"] == "AEA_MOSI"   # PB5: SPI1_MOSI (AF5)
+    on_net = sorted(p.ref for p in parts.values() if "AEA_MOSI" in p.pins.values())
+    assert on_net == sorted([pullups[0].ref, "U12"]), on_net
+    assert parts["U12"].pins["12"] == "AEA_MOSI" and parts["U12"].pins["11"] == "AEA_MOSI_5V"
 
 
 def _rev_b_wiring(parts):

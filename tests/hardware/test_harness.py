@@ -257,3 +257,38 @@ def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path
     harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log))
     assert log.getvalue().count("harness: unchanged") == 1
     assert "PHR-4-OTHER" in html.unescape((out / "harness" / "harness-neck-pitch-roll.svg").read_text())
+
+
+def test_every_brake_has_its_cable(params, parts):
+    """Board revision D switches each brake's coil on a 2-pin header (+12V, the channel's switched return); the
+    harness carries a cable from it to the brake for each braked joint, with PH housings and crimps."""
+    h = plan.plan(params, spec.load(params), parts)
+    assert not plan.brake_wiring_problems(params, h.cables)
+    brakes = {r.target: r for r in h.cables if r.target.endswith("_brake")}
+    assert set(brakes) == {"neck_pitch_brake", "neck_roll_brake"}
+    assert brakes["neck_pitch_brake"].source == ("neck-pitch-roll", "J23")
+    assert brakes["neck_pitch_brake"].wires == ("+12V", "M1_BRAKE_N")
+    assert brakes["neck_roll_brake"].source == ("neck-pitch-roll", "J33")
+    assert brakes["neck_roll_brake"].wires == ("+12V", "M2_BRAKE_N")
+    lines = [line for line in plan.bom_lines(h) if line[2] in ("harness pitch-brake", "harness roll-brake")]
+    assert sorted(k for k, _, _ in lines if k.startswith("jst-")) == \
+        ["jst-PHR-2", "jst-PHR-2", "jst-SPH-002T-P0.5S", "jst-SPH-002T-P0.5S"]
+
+
+def test_a_brake_without_its_cable_fails(params, parts, tmp_path):
+    def drop_roll_brake(data):
+        data["harness"]["cables"] = [c for c in data["harness"]["cables"] if c["name"] != "roll-brake"]
+    broken = _variant(params, tmp_path, drop_roll_brake)
+    h = plan.plan(broken, spec.load(broken), parts)
+    assert any(p.startswith("neck_roll: its brake spec-brake-23-12V-8mNm has no cable") for p in h.problems), h.problems
+
+
+def test_a_brake_cable_from_the_wrong_header_fails(params, parts, tmp_path):
+    def swap(data):
+        for c in data["harness"]["cables"]:
+            if c["name"] == "roll-brake":
+                c["from"] = ["neck-pitch-roll", "J23"]
+    broken = _variant(params, tmp_path, swap)
+    h = plan.plan(broken, spec.load(broken), parts)
+    assert any("roll-brake: neck_roll_brake needs neck-pitch-roll's header with +12V, M2_BRAKE_N" in p
+               for p in h.problems), h.problems

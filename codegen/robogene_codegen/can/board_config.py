@@ -70,6 +70,7 @@ class AxisConfig:
     max_velocity: float         # deg/s
     current_limit: int          # mA
     homing: Optional[Homing] = None
+    has_brake: bool = False     # its one motor carries a power-off holding brake (drives.<joint>.brake)
 
     @property
     def homing_counts(self) -> dict[str, int]:
@@ -354,8 +355,15 @@ class _Reader:
             lo, hi = self.mech["limits"][name]
             first = chain.get(motors[0], {})
             bits = first.get("joint_encoder", {}).get("bits", 0) if len(motors) == 1 else 0
+            braked = [m for m in motors if chain[m].get("brake")]
+            if braked and len(motors) > 1:
+                # the board's brake output follows one axis; a coupled motor serves both
+                self.fail(path, f"{', '.join(braked)} carries a brake, but a board drives brakes only on uncoupled "
+                          "axes (drives.<joint>.brake in the parameter file)")
+                raise _Fail
             axis = AxisConfig(name, index, 0, 0, lo, hi, counts, motors, self.mech["reductions"][motors[0]],
-                              chain[motors[0]]["motor_encoder_lines"], bits, pid, max_velocity, current)
+                              chain[motors[0]]["motor_encoder_lines"], bits, pid, max_velocity, current,
+                              has_brake=bool(braked))
             for bound in (lo, hi):
                 self.fits(path, bound * counts, "set_min_position", "position", f"the limit {bound:g} deg")
             axes[name] = axis

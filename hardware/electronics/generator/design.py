@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 POWER_NETS = ("GND", "+3V3", "+5V", "+12V")
 # The board's revision: the schematic's and the board's title blocks, the silkscreen, the Gerber job file and
 # the catalog's bare-board entry all carry it (tests/electronics/test_revision.py reads them all).
-REVISION = "C"
+REVISION = "D"
 NC = None  # pin deliberately left open: gets a no-connect flag
 
 
@@ -94,11 +94,14 @@ def _power_parts():
 
 def _mcu_parts():
     b = "mcu"
+    # Rev D: every GPIO of the LQFP-32 is taken, so the two brake gates take PB5 (AEA MOSI, which only ever
+    # sent 0xFFFF: R11 now holds it high alone) and PA4 (the LED, which moves to PB8-BOOT0: the pin is BOOT0
+    # only while reset is released, and the LED's 1k and R4 keep it low then).
     pins = {
         "1": "+3V3", "17": "+3V3", "15": "+3V3", "16": "GND", "32": "GND", "14": "GND",
         "4": "NRST", "2": "HSE_IN", "3": "HSE_OUT", "13": "VBUS_SENSE",
-        "26": "AEA_CLK", "27": "AEA_DO", "28": "AEA_MOSI", "29": "M2_QA", "30": "M2_QB", "31": "BOOT0",
-        "5": "M1_QA", "6": "M1_QB", "7": "M2_IN1", "8": "M2_IN2", "9": "LED", "10": "M2_AEA_CS",
+        "26": "AEA_CLK", "27": "AEA_DO", "28": "M1_BRAKE", "29": "M2_QA", "30": "M2_QB", "31": "BOOT0",
+        "5": "M1_QA", "6": "M1_QB", "7": "M2_IN1", "8": "M2_IN2", "9": "M2_BRAKE", "10": "M2_AEA_CS",
         "11": "M1_ISENSE", "12": "M2_ISENSE", "18": "M1_IN1", "19": "M1_IN2", "20": "MOT_FAULT",
         "21": "CAN_RX", "22": "CAN_TX", "23": "SWDIO", "24": "SWCLK", "25": "M1_AEA_CS",
     }
@@ -115,7 +118,7 @@ def _mcu_parts():
              "ABM8-8.000MHZ-B2-T", "Abracon", {"1": "HSE_IN", "2": "GND", "3": "HSE_OUT", "4": "GND"}, b),
         _c("C14", "10p", "HSE_IN", "GND", b, "GRM1885C1H100JA01D"),
         _c("C15", "10p", "HSE_OUT", "GND", b, "GRM1885C1H100JA01D"),
-        _r("R5", "1k", "LED", "LED_A", b, "RC0603FR-071KL"),
+        _r("R5", "1k", "BOOT0", "LED_A", b, "RC0603FR-071KL"),
         Part("D3", "Device:LED", "green", "LED_SMD:LED_0603_1608Metric", "150060GS75000", "Wurth Elektronik",
              {"1": "GND", "2": "LED_A"}, b, "status LED"),
         # Programming and recovery on a right-angle header at the board's edge, reachable from the side when
@@ -201,6 +204,27 @@ def _axis_parts(n, first):
     ]
 
 
+def _brake_parts(n):
+    """One holding-brake output (rev D): the motor's power-off brake is released while its 12 V coil is
+    powered. A low-side logic-level N-MOSFET switches the coil's return, its gate straight from an MCU pin
+    (it switches only when the axis is enabled or disabled, so no gate resistor is needed to tame the edges,
+    and the level check sees the MCU pin and the gate on one net); the pull-down holds the gate low, the
+    brake applied, while the MCU is in reset or its pin is still an input. The flyback diode takes the coil's
+    current when the switch opens (the brake then engages as that current decays, within milliseconds)."""
+    b = f"axis{n}"
+    m = f"M{n}_"
+    return [
+        Part(f"Q{20 + 10 * n}", "Transistor_FET:AO3400A", "AO3400A", "Package_TO_SOT_SMD:SOT-23", "AO3400A",
+             "Alpha & Omega Semiconductor", {"1": m + "BRAKE", "2": "GND", "3": m + "BRAKE_N"}, b,
+             f"brake switch, motor {n} (low side)"),
+        _r(f"R{23 + 10 * n}", "100k", m + "BRAKE", "GND", b, "RC0603FR-07100KL"),
+        Part(f"D{20 + 10 * n}", "Device:D", "MBR0540", "Diode_SMD:D_SOD-123", "MBR0540T1G", "onsemi",
+             {"1": "+12V", "2": m + "BRAKE_N"}, b, f"brake coil flyback, motor {n}"),
+        Part(f"J{13 + 10 * n}", "Connector_Generic:Conn_01x02", "BRAKE", JST_PH.format(n=2), "B2B-PH-K-S(LF)(SN)",
+             "JST", {"1": "+12V", "2": m + "BRAKE_N"}, b, f"holding brake {n} (12 V coil, switched low side)"),
+    ]
+
+
 def _aea_parts():
     """The absolute encoders' shared data line (each encoder drives it while its chip select is low)
     reaches PB4 through a single Schmitt buffer of the same kind as the quadrature encoders' buffers; their
@@ -224,8 +248,9 @@ def _aea_parts():
               "10": "GND", "9": "M2_AEA_CS", "8": "M2_AEA_CS_5V", "13": "GND", "12": "AEA_MOSI", "11": "AEA_MOSI_5V",
               "14": "+5V", "7": "GND"}, b, "encoder level shifter (3.3 V in, 5 V out)"),
         _c("C18", "100n", "+5V", "GND", b, "GCM188R71H104KA57D"),
-        # While the MCU pins are still inputs (reset, boot) the pull-ups keep both chip selects inactive and
-        # MOSI high; the level shifter's CMOS inputs never float.
+        # While the MCU pins are still inputs (reset, boot) the pull-ups keep both chip selects inactive; the
+        # level shifter's CMOS inputs never float. MOSI has no MCU pin since rev D (PB5 switches brake 1): the
+        # firmware only ever sent 0xFFFF (read angle), which R11 holding the input high sends on every frame.
         _r("R9", "10k", "+3V3", "M1_AEA_CS", b, "RC0603FR-0710KL"),
         _r("R10", "10k", "+3V3", "M2_AEA_CS", b, "RC0603FR-0710KL"),
         _r("R11", "10k", "+3V3", "AEA_MOSI", b, "RC0603FR-0710KL"),
@@ -243,4 +268,5 @@ def _mounting_holes():
 
 def parts():
     return (_power_parts() + _mcu_parts() + _shared_motor_parts() + _can_parts()
-            + _axis_parts(1, 5) + _axis_parts(2, 7) + _aea_parts() + _mounting_holes())
+            + _axis_parts(1, 5) + _axis_parts(2, 7) + _brake_parts(1) + _brake_parts(2) + _aea_parts()
+            + _mounting_holes())

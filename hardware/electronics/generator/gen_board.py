@@ -47,6 +47,12 @@ ANCHORS = {
     "U9": (31.0, 45.0, 90), "U10": (53.0, 45.0, 90),
     # the absolute encoders' data buffer and their 3.3 V -> 5 V level shifter, between the MCU and J22/J32
     "U11": (42.0, 45.0, 90), "U12": (47.5, 46.0, 90),
+    # the brake connectors (rev D) at the right edge between the motor connectors, each beside its motor's:
+    # the +12V track reaches them on F.Cu from the drivers' supply between the two axis blocks
+    "J23": (84.5, 23.2, 0), "J33": (84.5, 29.2, 0),
+    # their switches between the two axis blocks, next to the headers (placed by the search, they crowded the
+    # MCU's right side, and the routing there failed)
+    "Q30": (73.2, 30.0, 90), "Q40": (77.0, 30.0, 90),
 }
 POWER_NETS = {"GND", "+12V", "+3V3", "+5V"}
 REVISION_TEXT_AT = (W / 2, 21.5)  # bottom silkscreen, clear of the through-hole pads
@@ -56,7 +62,8 @@ NEAR = {"C1": "Q1", "R1": "Q1", "D2": "Q1", "C3": "U2", "C4": "U2", "C5": "L1", 
         "C8": "U3", "C9": "U1", "C10": "U1", "C11": "U1", "C12": "U1", "C16": "U4", "D4": "U4",
         "C30": "U5", "C31": "U5", "C32": "U6", "C40": "U7", "C41": "U7", "C42": "U8", "R6": "JP1",
         "C33": "U9", "C43": "U10", "R31": "U9", "R32": "U9", "R41": "U10", "R42": "U10",
-        "C17": "U11", "R8": "U11", "FB1": "U2", "C18": "U12", "R9": "U12", "R10": "U12", "R11": "U12"}
+        "C17": "U11", "R8": "U11", "FB1": "U2", "C18": "U12", "R9": "U12", "R10": "U12", "R11": "U12",
+        "D30": "J23", "D40": "J33", "R33": "Q30", "R43": "Q40"}
 
 
 def mm(v):

@@ -175,8 +175,8 @@ BLOCKS = {
     "power": ("Supply: daisy-chain in/out, fuse, reverse polarity, TVS, 12 V -> 5 V buck, 5 V -> 3.3 V LDO, bus sense", 15, 20, 280),
     "mcu": ("Microcontroller STM32G431 (FDCAN), crystal, edge SWD/BOOT0 header, status LED", 310, 20, 270),
     "can": ("CAN bus: transceiver, ESD, daisy-chain connectors, jumper-selectable 120 ohm termination", 15, 125, 280),
-    "axis1": ("Motor 1: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 15, 195, 280),
-    "axis2": ("Motor 2: H-bridge, inline current sense, motor and encoder connectors, encoder buffer", 310, 250, 270),
+    "axis1": ("Motor 1: H-bridge, inline current sense, motor and encoder connectors, encoder buffer, brake switch", 15, 195, 280),
+    "axis2": ("Motor 2: H-bridge, inline current sense, motor and encoder connectors, encoder buffer, brake switch", 310, 250, 270),
     "mech": ("Mounting holes (M3)", 15, 315, 75),
     "aea": ("Absolute encoders: data buffer to PB4 (5 V in, 3.3 V out), CLK/CS/MOSI level shifter (3.3 V in, 5 V out)", 310, 125, 270),
 }

@@ -32,6 +32,11 @@ def config(params: HeadParameters) -> dict:
             bits = int(params.purchased(drive.text("joint_encoder")).num("bits", positive=True))
             entry["joint_encoder"] = {"part": drive.text("joint_encoder"), "bits": bits,
                                       "counts_per_degree": round(2 ** bits / 360.0, 6)}
+        if drive.has("brake"):
+            brake = params.purchased(drive.text("brake"))
+            volts, watts = brake.num("voltage", positive=True), brake.num("power_W", positive=True)
+            entry["brake"] = {"part": drive.text("brake"), "voltage": volts, "power_W": watts,
+                              "coil_current_A": round(watts / volts, 6)}
         joints.append(entry)
     return {
         "source": params.path.name,

@@ -70,8 +70,10 @@ int main(void) {
   while (!(RCC_CR & RCC_CR_HSERDY_Msk)) {
   }
   RCC_AHB2ENR |= RCC_AHB2ENR_GPIOAEN_Msk | RCC_AHB2ENR_GPIOBEN_Msk;
-  gpio_mode(GPIOA_BASE, PIN_LED, GPIO_OUTPUT, GPIO_NO_PULL);
-  gpio_write(GPIOA_BASE, PIN_LED, 1);  // steady: the bootloader (the application blinks)
+  // The LED is on PB8 since board revision D (PA4, its rev C pin, now releases brake 2 when high). The
+  // brake pins stay as reset left them: their pull-downs hold the brakes while the bootloader runs.
+  gpio_mode(GPIOB_BASE, PIN_BOOT0, GPIO_OUTPUT, GPIO_NO_PULL);
+  gpio_write(GPIOB_BASE, PIN_BOOT0, 1);  // steady: the bootloader (the application blinks)
   const uint8_t address = settings_address(ROBOGENE_BOARD_ADDRESS);
   fdcan_init(address);
   rg_boot_init(&boot, address, &target, &board_hal);

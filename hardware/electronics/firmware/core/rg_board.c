@@ -54,6 +54,14 @@ void rg_board_init(rg_board_t *b, const rg_board_params_t *params, const rg_hal_
     b->motors[i].current_limit_ma = p->current_limit_ma;
     b->motors[i].duty_cap = (float)params->pwm_full_scale;
   }
+  // Brakes only where motor i drives axis i alone: on a coupled board a motor serves both axes, and the
+  // board configuration has no brakes there (the codegen refuses them).
+  for (unsigned i = 0; i < 2u; ++i) {
+    b->motors[i].has_brake = params->coupling == RG_COUPLING_NONE && params->axes[i].present &&
+                             params->axes[i].has_brake && hal->set_brake != NULL;
+    // Applied from the start, as the gate's pull-down already holds it through reset.
+    if (b->motors[i].has_brake) hal->set_brake(hal->ctx, i, false);
+  }
   // On a coupled board both motors serve both axes: each takes the lower of the two limits.
   if (params->coupling != RG_COUPLING_NONE) {
     const int32_t l0 = params->axes[0].current_limit_ma, l1 = params->axes[1].current_limit_ma;
@@ -167,6 +175,13 @@ static float limit_current(rg_board_t *b, unsigned m, float duty) {
   return rg_clampf(duty, -mo->duty_cap, mo->duty_cap);
 }
 
+// Only a motor with a brake output ever drives it; the call is repeated every period (the output is a
+// level, so a lost write cannot leave a brake released).
+static void set_brake(rg_board_t *b, unsigned m, bool released) {
+  if (!b->motors[m].has_brake) return;
+  b->hal->set_brake(b->hal->ctx, m, released);
+}
+
 static void drive(rg_board_t *b) {
   float duty[2];
   const float u0 = b->axes[0].output, u1 = b->axes[1].output;
@@ -178,12 +193,26 @@ static void drive(rg_board_t *b) {
     duty[1] = u1;
   }
   for (unsigned m = 0; m < 2u; ++m) {
+    rg_motor_t *mo = &b->motors[m];
     const bool enabled = b->params.coupling == RG_COUPLING_NONE
                              ? running(b->axes[m].mode)
                              : (running(b->axes[0].mode) || running(b->axes[1].mode));
     const float full = (float)b->params.pwm_full_scale;
     const float d = rg_clampf(limit_current(b, m, duty[m]), -full, full);
+    // The brake holds whenever the bridge does not: applied before the bridge turns off (a disable, a
+    // fault), released only once the bridge has been on and its loop holding for a whole period.
+    if (!enabled) set_brake(b, m, false);
     b->hal->set_pwm(b->hal->ctx, m, enabled ? (int32_t)lroundf(d) : 0, enabled);
+    if (enabled && mo->bridge_on) set_brake(b, m, true);
+    mo->bridge_on = enabled;
+  }
+}
+
+void rg_board_stop_motors(rg_board_t *b) {
+  for (unsigned m = 0; m < 2u; ++m) {
+    set_brake(b, m, false);
+    b->hal->set_pwm(b->hal->ctx, m, 0, false);
+    b->motors[m].bridge_on = false;
   }
 }
 

@@ -43,6 +43,7 @@ typedef struct {
   int32_t min_position, max_position;  // counts
   int32_t max_speed;                   // counts/s
   int32_t current_limit_ma;            // per motor of the axis
+  bool has_brake;                      // the axis's motor has a power-off holding brake (uncoupled boards only)
   rg_pid_gains_t pid;
   rg_homing_config_t homing;
 } rg_axis_params_t;
@@ -84,6 +85,8 @@ typedef struct {
   float duty_cap;                // the current limiter's ceiling, PWM steps
   uint32_t overcurrent_periods;
   int32_t last_current_ma;
+  bool has_brake;
+  bool bridge_on;                // the bridge was enabled in the last control period
 } rg_motor_t;
 
 typedef struct rg_board {
@@ -111,6 +114,10 @@ void rg_board_receive(rg_board_t *b, const rg_can_frame_t *frame);
 void rg_board_tick(rg_board_t *b);
 // The firmware reports a control period that overran its budget (status board flag).
 void rg_board_note_overrun(rg_board_t *b);
+
+// Applies the holding brakes, then turns both bridges off (enter_bootloader and any other stop
+// that cannot wait for the next control period).
+void rg_board_stop_motors(rg_board_t *b);
 
 // Seconds of one control period.
 float rg_board_period_s(const rg_board_t *b);

@@ -47,8 +47,8 @@ void rg_board_receive_bootloader(rg_board_t *b, const rg_can_frame_t *frame) {
     if (rg_get_u32(frame->data + ROBOGENE_CAN_ENTER_BOOTLOADER_KEY_BYTE) != RG_BOOT_ENTER_KEY) return;
     for (unsigned i = 0; i < 2u; ++i) {
       if (b->axes[i].present) rg_board_set_mode(b, i, ROBOGENE_CAN_CONTROL_MODE_IDLE);
-      b->hal->set_pwm(b->hal->ctx, i, 0, false);
     }
+    rg_board_stop_motors(b);
     if (b->hal->enter_bootloader != NULL) b->hal->enter_bootloader(b->hal->ctx);
     return;
   }

@@ -46,6 +46,9 @@ typedef struct rg_hal {
   // Restart into the bootloader and stay there (enter_bootloader), the bridges already off; may be
   // NULL (the command is then ignored). Called from rg_board_receive.
   void (*enter_bootloader)(void *ctx);
+  // Release (true) or apply (false) the power-off holding brake of motor 0 or 1: the brake output's
+  // gate (board revision D). Called only for motors whose axis has_brake; may be NULL (no brake outputs).
+  void (*set_brake)(void *ctx, unsigned motor, bool released);
 } rg_hal_t;
 
 #ifdef __cplusplus

@@ -50,6 +50,9 @@ typedef struct {
   int16_t homing_pwm;          // PWM steps
   int32_t homing_backoff;      // counts moved away from the stop afterwards
   uint32_t homing_timeout_ms;
+  // 1: the axis's motor has a power-off holding brake on the board's brake output of its bridge (drives.<joint>.brake);
+  // 0: the firmware never drives that output.
+  uint8_t has_brake;
 } robogene_axis_config_t;
 
 typedef struct {
@@ -69,11 +72,13 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_pitch", -11264, 8260, 56320, 2800,
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u},
+      0, 0, 0, 0, 0, 0u,
+      1u},
      {"neck_roll", -27989, 27989, 209920, 1200,
       46, 1, 460, 8u, 0, 900, 300,
       1399.4666666666667f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u}
+      0, 0, 0, 0, 0, 0u,
+      1u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
    {{1, 0}, {0, 1}},
@@ -82,11 +87,13 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_yaw", -43447, 43447, 193097, 1200,
       66, 1, 660, 8u, 0, 900, 300,
       965.4857142857144f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u},
+      0, 0, 0, 0, 0, 0u,
+      0u},
      {"eyes_tilt", -16774, 16774, 83870, 620,
       114, 1, 1140, 8u, 0, 900, 300,
       559.1365079365079f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u}
+      0, 0, 0, 0, 0, 0u,
+      0u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
    {{1, 1}, {1, -1}},
@@ -95,11 +102,13 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"eyes_version", -14677, 14677, 195698, 600,
       130, 1, 1300, 8u, 0, 900, 300,
       489.24444444444447f, 512u, 0u,
-      1, 27642, 4892, 250, 13943, 20000u},
+      1, 27642, 4892, 250, 13943, 20000u,
+      0u},
      {"eyes_vergence", 0, 11008, 97849, 600,
       260, 1, 2600, 8u, 0, 900, 300,
       244.62222222222223f, 512u, 0u,
-      0, 0, 0, 0, 0, 0u}
+      0, 0, 0, 0, 0, 0u,
+      0u}
    }}
 };
 

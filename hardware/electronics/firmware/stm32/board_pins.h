@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// What the motor board (revision C, hardware/electronics/generator/design.py) wires to each pin of
+// What the motor board (revision D, hardware/electronics/generator/design.py) wires to each pin of
 // its STM32G431KBT6 (LQFP-32), with the alternate function that pin needs (datasheet DS12589).
 #ifndef BOARD_PINS_H
 #define BOARD_PINS_H
@@ -11,7 +11,7 @@
 #define PIN_M1_QB 1u      // PA1  TIM2_CH2 AF1
 #define PIN_M2_IN1 2u     // PA2  TIM15_CH1 AF9, H-bridge 2
 #define PIN_M2_IN2 3u     // PA3  TIM15_CH2 AF9
-#define PIN_LED 4u        // PA4  status LED, output
+#define PIN_M2_BRAKE 4u   // PA4  brake 2 switch gate, output, high = released (100 k pull-down; rev C: the LED)
 #define PIN_M2_AEA_CS 5u  // PA5  joint encoder 2 chip select (active low, 10 k pull-up; rev B had it on PB5)
 #define PIN_M1_ISENSE 6u  // PA6  ADC2_IN3, motor 1 current (INA240A1)
 #define PIN_M2_ISENSE 7u  // PA7  ADC2_IN4, motor 2 current
@@ -25,9 +25,11 @@
 #define PIN_VBUS_SENSE 0u // PB0  ADC1_IN15, 12 V through 47 k / 10 k
 #define PIN_AEA_CLK 3u    // PB3  SPI1_SCK AF5
 #define PIN_AEA_DO 4u     // PB4  SPI1_MISO AF5
-#define PIN_AEA_MOSI 5u   // PB5  SPI1_MOSI AF5, held high: 0xFFFF is the AS5048A's read-angle command
+#define PIN_M1_BRAKE 5u   // PB5  brake 1 switch gate, output, high = released (100 k pull-down; rev C: AEA MOSI,
+                          //      now held high by R11 alone: 0xFFFF is the AS5048A's read-angle command)
 #define PIN_M2_QA 6u      // PB6  TIM4_CH1 AF2, motor 2 encoder A
 #define PIN_M2_QB 7u      // PB7  TIM4_CH2 AF2
+#define PIN_BOOT0 8u      // PB8  BOOT0 at reset, then the status LED, output (rev C had the LED on PA4)
 
 #define ADC_CH_M1_ISENSE 3u   // on ADC2
 #define ADC_CH_M2_ISENSE 4u   // on ADC2

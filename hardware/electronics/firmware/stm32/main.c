@@ -48,6 +48,10 @@ static void hal_pwm(void *ctx, unsigned m, int32_t duty, bool enabled) {
   (void)ctx;
   motor_io_set_pwm(m, duty, enabled);
 }
+static void hal_brake(void *ctx, unsigned m, bool released) {
+  (void)ctx;
+  motor_io_set_brake(m, released);
+}
 static bool hal_send(void *ctx, const rg_can_frame_t *f) {
   (void)ctx;
   return fdcan_send(f);
@@ -71,7 +75,7 @@ static void hal_enter_bootloader(void *ctx) {
 }
 
 static const rg_hal_t hal = {0,       hal_encoder, hal_current,      hal_supply,     hal_fault,           hal_pwm,
-                             hal_send, hal_save_address, hal_can_errors, hal_enter_bootloader};
+                             hal_send, hal_save_address, hal_can_errors, hal_enter_bootloader, hal_brake};
 
 static bool axes_at_rest(void) {
   for (unsigned i = 0; i < 2u; ++i) {
@@ -87,18 +91,23 @@ static bool axes_at_rest(void) {
 int main(void) {
   clock_init();
   RCC_AHB2ENR |= RCC_AHB2ENR_GPIOAEN_Msk | RCC_AHB2ENR_GPIOBEN_Msk;
-  gpio_mode(GPIOA_BASE, PIN_LED, GPIO_OUTPUT, GPIO_NO_PULL);
+  gpio_mode(GPIOB_BASE, PIN_BOOT0, GPIO_OUTPUT, GPIO_NO_PULL);  // the LED, once BOOT0 was sampled
   rg_board_params_t params;
   if (!rg_board_params_for_address(ROBOGENE_BOARD_ADDRESS, &params)) {
     for (;;) {  // built for a board the head does not have: blink fast, drive nothing
-      gpio_write(GPIOA_BASE, PIN_LED, 1);
+      gpio_write(GPIOB_BASE, PIN_BOOT0, 1);
       clock_delay_us(100000u);
-      gpio_write(GPIOA_BASE, PIN_LED, 0);
+      gpio_write(GPIOB_BASE, PIN_BOOT0, 0);
       clock_delay_us(100000u);
     }
   }
   params.address = settings_address(params.address);
-  motor_io_init(params.pwm_full_scale);
+  // Only a braked axis's pin becomes an output; the others stay as reset left them, held low by their pull-downs.
+  unsigned brakes = 0u;
+  for (unsigned i = 0; i < 2u; ++i) {
+    if (params.coupling == RG_COUPLING_NONE && params.axes[i].present && params.axes[i].has_brake) brakes |= 1u << i;
+  }
+  motor_io_init(params.pwm_full_scale, brakes);
   fdcan_init(params.address);
   rg_board_init(&board, &params, &hal);
   watchdog_start();
@@ -130,6 +139,6 @@ int main(void) {
       pending_address = -1;
     }
     watchdog_refresh();
-    gpio_write(GPIOA_BASE, PIN_LED, (++led / 500u) & 1u);  // 1 Hz blink: the loop is alive
+    gpio_write(GPIOB_BASE, PIN_BOOT0, (++led / 500u) & 1u);  // 1 Hz blink: the loop is alive
   }
 }

@@ -67,8 +67,18 @@ static uint32_t adc_read(uint32_t adc, unsigned channel) {
   return ADC(adc, DR) & 0xFFFu;
 }
 
-void motor_io_init(uint16_t pwm_full_scale_steps) {
+static const uint32_t brake_port[2] = {GPIOB_BASE, GPIOA_BASE};
+static const unsigned brake_pin[2] = {PIN_M1_BRAKE, PIN_M2_BRAKE};
+static unsigned brake_outputs;  // bit m: motor m's brake pin is an output
+
+void motor_io_init(uint16_t pwm_full_scale_steps, unsigned brakes) {
   full_scale = pwm_full_scale_steps;
+  brake_outputs = brakes & 3u;
+  for (unsigned m = 0; m < 2u; ++m) {
+    if (!(brake_outputs & (1u << m))) continue;
+    gpio_write(brake_port[m], brake_pin[m], 0);  // low before it drives: the brake stays applied
+    gpio_mode(brake_port[m], brake_pin[m], GPIO_OUTPUT, GPIO_NO_PULL);
+  }
   pwm_period = SYSCLK_HZ / PWM_HZ;
   RCC_APB2ENR |= RCC_APB2ENR_TIM1EN_Msk | RCC_APB2ENR_TIM15EN_Msk;
   RCC_APB1ENR1 |= RCC_APB1ENR1_TIM2EN_Msk | RCC_APB1ENR1_TIM4EN_Msk;
@@ -119,3 +129,8 @@ uint32_t motor_io_supply_mv(void) {
 }
 
 bool motor_io_bridge_fault(void) { return gpio_read(GPIOA_BASE, PIN_MOT_FAULT) == 0; }
+
+void motor_io_set_brake(unsigned motor, bool released) {
+  if (!(brake_outputs & (1u << (motor & 1u)))) return;
+  gpio_write(brake_port[motor & 1u], brake_pin[motor & 1u], released ? 1 : 0);
+}

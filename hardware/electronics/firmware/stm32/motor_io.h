@@ -12,7 +12,10 @@
 
 #define PWM_HZ 20000u
 
-void motor_io_init(uint16_t pwm_full_scale);
+// brakes: bit m set when motor m has a holding brake; only those pins become outputs (driven low: applied).
+void motor_io_init(uint16_t pwm_full_scale, unsigned brakes);
+// Release (true) or apply (false) motor m's brake; ignored for a motor without one.
+void motor_io_set_brake(unsigned motor, bool released);
 // duty in steps of pwm_full_scale, sign = direction; disabled: both inputs low (coast).
 void motor_io_set_pwm(unsigned motor, int32_t duty, bool enabled);
 uint16_t motor_io_encoder(unsigned motor);

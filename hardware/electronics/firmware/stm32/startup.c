@@ -6,6 +6,7 @@
 // so an interrupt that fires is a fault, and the watchdog resets the board out of the trap.
 #include <stdint.h>
 
+#include "board_pins.h"
 #include "generated/stm32g431_regs.h"
 
 extern uint32_t _stack_top, _data_load, _data_start, _data_end, _bss_start, _bss_end;
@@ -15,6 +16,10 @@ void rg_reset_handler(void);
 static void (*const vectors[16 + 102])(void);
 
 static void trap(void) {
+  // Apply both holding brakes at once rather than after the watchdog's reset (up to 50 ms): their gates
+  // low. Harmless where they are not outputs (the bootloader, unbraked axes).
+  RG_REG32(GPIOB_BASE + GPIOA_BSRR_OFFSET) = 1u << (16u + PIN_M1_BRAKE);
+  RG_REG32(GPIOA_BASE + GPIOA_BSRR_OFFSET) = 1u << (16u + PIN_M2_BRAKE);
   for (;;) {
   }
 }

@@ -39,6 +39,13 @@ struct Plant {
   }
 };
 
+// One call of the HAL's bridge and brake outputs, in the order the core made them.
+struct OutputCall {
+  enum Kind { kBridge, kBrake } kind;
+  unsigned motor;
+  bool on;  // bridge enabled, brake released
+};
+
 struct FakeBoard {
   rg_board_t core{};
   rg_hal_t hal{};
@@ -49,6 +56,9 @@ struct FakeBoard {
   std::vector<rg_can_frame_t> sent;
   std::vector<int> saved_addresses;
   int bootloader_requests = 0;
+  bool brake_released[2] = {false, false};  // the brake pins' level as the core last set it (low after reset)
+  int brake_writes[2] = {0, 0};
+  std::vector<OutputCall> outputs;
 
   static FakeBoard& of(void* ctx) { return *static_cast<FakeBoard*>(ctx); }
 
@@ -86,6 +96,12 @@ struct FakeBoard {
     hal.set_pwm = [](void* c, unsigned m, std::int32_t duty, bool enabled) {
       of(c).plant[m].duty = enabled ? duty / 1000.0 : 0.0;
       of(c).plant[m].enabled = enabled;
+      of(c).outputs.push_back({OutputCall::kBridge, m, enabled});
+    };
+    hal.set_brake = [](void* c, unsigned m, bool released) {
+      of(c).brake_released[m] = released;
+      ++of(c).brake_writes[m];
+      of(c).outputs.push_back({OutputCall::kBrake, m, released});
     };
     hal.can_send = [](void* c, const rg_can_frame_t* f) {
       of(c).sent.push_back(*f);

@@ -254,6 +254,7 @@ def plan(params: HeadParameters, spec: HarnessSpec, parts, connectors: dict | No
         length = through(c.via, ("neck_base", p0), end, where) + 2 * spec.service_loop
         runs.append(CableRun(c.name, c.cls, src.nets, (c.board, c.ref), src.mpn, target, target_mpn, c.via,
                              _round_up(length)))
+    problems += brake_wiring_problems(params, runs)
     cams = []
     for i, c in enumerate(spec.camera_cables):
         where = f"harness.camera_cables.routes[{i}] ({c.name})"
@@ -265,6 +266,32 @@ def plan(params: HeadParameters, spec: HarnessSpec, parts, connectors: dict | No
             problems.append(f"{where}: needs {required:.0f} mm, the longest camera cable is {max(spec.camera_lengths):g} mm")
         cams.append(CameraRun(c.name, c.via, round(required, 1), fits[0] if fits else math.nan))
     return Harness(spec, span_results, runs, cams, problems)
+
+
+def brake_wiring_problems(params: HeadParameters, runs: list[CableRun]) -> list[str]:
+    """Every holding brake (drives.<joint>.brake) needs a cable from the brake header of the board axis that drives
+    its joint (+12V and that channel's switched return, M<n>_BRAKE_N) to the brake: unwired, the brake never
+    releases and the joint cannot move."""
+    boards = params.root.node("motor_control").raw("boards")
+    out = []
+    for joint in CHAIN_JOINTS:
+        drive = params.drive(joint)
+        if not drive.has("brake"):
+            continue
+        axis = next(((b["name"], b["axes"].index(joint)) for b in boards if joint in b["axes"]), None)
+        if axis is None:
+            out.append(f"{joint}: its brake {drive.text('brake')} is on no board axis (motor_control.boards)")
+            continue
+        want = ("+12V", f"M{axis[1] + 1}_BRAKE_N")
+        cables = [r for r in runs if r.target == f"{joint}_brake"]
+        if not cables:
+            out.append(f"{joint}: its brake {drive.text('brake')} has no cable (harness.cables: from {axis[0]}'s "
+                       f"header with {', '.join(want)} to {joint}_brake)")
+        for r in cables:
+            if r.source[0] != axis[0] or r.wires != want:
+                out.append(f"harness cable {r.name}: {joint}_brake needs {axis[0]}'s header with {', '.join(want)}; "
+                           f"{r.source[0]} {r.source[1]} carries {', '.join(r.wires)}")
+    return out
 
 
 def bom_lines(harness: Harness) -> list[tuple[str, float, str]]:
