@@ -10,7 +10,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_stops
+from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_stops, yaw_bearings
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
@@ -29,7 +29,6 @@ def build(params: HeadParameters) -> list[Part]:
     ym = h.num("yaw_motor_x")
     tm = h.node("tilt_motor")
     tmx, tmz = tm.num("x"), tm.num("z")
-    yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
     tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
     al = dict(material="aluminium-6082", color=ALUMINIUM)
     joins = head_joins.build(params)
@@ -40,8 +39,9 @@ def build(params: HeadParameters) -> list[Part]:
     yaw_fixings, yaw_slot = mounts.mount_fixings(params, "neck_yaw"), mounts.mount_slot(params, "neck_yaw")
     yaw_plate = mounts.mount_thickness(params, "neck_yaw")
     m3 = params.purchased(mounts.FIXING_SCREW).num("diameter")   # tapped holes are drawn at the thread
-    floor = geom.cut(geom.box(x0, x1, -hw, hw, -ft, 0),
-                     geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
+    # the yaw bearings' boss stands on the floor (yaw_bearings)
+    floor = geom.cut(geom.union(geom.box(x0, x1, -hw, hw, -ft, 0), yaw_bearings.boss(params)),
+                     *yaw_bearings.housing_tools(params),
                      *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
                      *[geom.cyl("z", m3, -ft - 1, 1, (ym + fx, fy)) for fx, fy in yaw_fixings],
                      *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(params, yaw_gear.num("diameter"),
@@ -68,20 +68,19 @@ def build(params: HeadParameters) -> list[Part]:
 
     parts = [
         Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"),
-             note=notes["head_floor"], **al),
+             note=notes["head_floor"] + " " + yaw_bearings.HOUSING_NOTE, **al),
         Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side,
              note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right,
              note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, note=notes["head_back_plate"], **al),
         Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, note=notes["head_top_bar"], **al),
-        purchased.bearing(params, "neck_yaw_bearing", params.drive("neck_yaw").text("bearing"), "head_frame",
-                          loc(z=-ft)),
+        *yaw_bearings.head_parts(params),
         purchased.bearing(params, "eyes_tilt_bearing_left", params.drive("eyes_tilt").text("bearing"), "head_frame",
                           loc(tx, inner, tz, rx=-90)),
         purchased.bearing(params, "eyes_tilt_bearing_right", params.drive("eyes_tilt").text("bearing"), "head_frame",
                           loc(tx, -inner, tz, rx=90)),
-        purchased.joint_encoder(params, "neck_yaw_joint_encoder", "head_frame", loc(0, 0, 1)),
+        purchased.joint_encoder(params, "neck_yaw_joint_encoder", "head_frame", loc(0, 0, yaw_bearings.shaft_end(params) + 1)),
         purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame", loc(tx, -hw - 1, tz, rx=90)),
     ]
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.

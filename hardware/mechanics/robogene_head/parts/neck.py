@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import board_stack, drive_hubs, gearhead_screws, mounts, purchased
+from . import board_stack, drive_hubs, gearhead_screws, mounts, purchased, yaw_bearings
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -295,11 +295,11 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("x", hub.diameter, -x_lug + hub.clearance, -bl / 2 + 1),      # the drive's hub
-                       geom.cyl("z", shaft, bh / 2 - 1, zy))
+                       geom.cyl("z", shaft, bh / 2 - 1, zy + yaw_bearings.shaft_end(params)))
     # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
     at = loc(z=zy - yaw_pulley_drop(params))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
-                     *hub.tapped_holes(), *hub.lands(),
+                     *hub.tapped_holes(), *hub.lands(), *yaw_bearings.shaft_grooves(params, zy),
                      *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)])
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
     screw = mounts.joint_set_screw(params)
@@ -311,7 +311,8 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
              mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
              color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft, joint="neck_yaw")),
     ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
-         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))]
+         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))] \
+        + yaw_bearings.shaft_parts(params, zy)
 
 
 def pitch_hub_of(params: HeadParameters, at: tuple[float, float]) -> drive_hubs.Hub:
