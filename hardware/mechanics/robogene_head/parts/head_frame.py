@@ -10,7 +10,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_stops, yaw_bearings
+from . import gearhead_screws, head_joins, mounts, neck, purchased, tilt_bearings, tilt_stops, yaw_bearings
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
@@ -51,15 +51,18 @@ def build(params: HeadParameters) -> list[Part]:
     stop_pins, stop_holes = tilt_stops.pins(params, inner, (tx, tz), "head_frame")
     tap_depth = head_joins.tap_depth(params)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
-                    geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
                     geom.cyl("y", mounts.hub_hole(params, tilt_gear.num("shaft_diameter")), inner - 1, hw + 1, (tmx, tmz)),
                     *[t.moved(tilt_flange) for t in gearhead_screws.holes(params, tilt_gear.num("diameter"), st)],
                     # M3 tapped holes for the face plate screws, modelled at the thread's size like every
                     # tapped hole of the head (the drawing's note gives the tap drill)
                     *[geom.cyl("x", m3, sx1 - tap_depth, sx1 + 1, (inner + st / 2, z)) for z in face_z],
                     *joins.holes["head_side_plate"], *stop_holes)
-    side = geom.single_solid(side, "side plate")
-    side_right = side.mirror("XZ")
+    # The left plate's through-bore holds the floating tilt bearing; the right plate's boss the fixed one
+    # (tilt_bearings).
+    side_right = geom.single_solid(geom.cut(geom.union(side.mirror("XZ"), tilt_bearings.right_boss(params)),
+                                            *tilt_bearings.right_seat_tools(params)), "right side plate")
+    side = geom.single_solid(geom.cut(side, geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz))),
+                             "side plate")
     back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"],
                                       *tilt_clamp_back_holes(params)), "back plate")
     top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
@@ -72,16 +75,16 @@ def build(params: HeadParameters) -> list[Part]:
         Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side,
              note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right,
-             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
+             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE + " " + tilt_bearings.BOSS_NOTE, **al),
         Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, note=notes["head_back_plate"], **al),
         Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, note=notes["head_top_bar"], **al),
         *yaw_bearings.head_parts(params),
         purchased.bearing(params, "eyes_tilt_bearing_left", params.drive("eyes_tilt").text("bearing"), "head_frame",
                           loc(tx, inner, tz, rx=-90)),
-        purchased.bearing(params, "eyes_tilt_bearing_right", params.drive("eyes_tilt").text("bearing"), "head_frame",
-                          loc(tx, -inner, tz, rx=90)),
+        *[p for p in tilt_bearings.right_parts(params) if p.link == "head_frame"],
         purchased.joint_encoder(params, "neck_yaw_joint_encoder", "head_frame", loc(0, 0, yaw_bearings.shaft_end(params) + 1)),
-        purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame", loc(tx, -hw - 1, tz, rx=90)),
+        purchased.joint_encoder(params, "eyes_tilt_joint_encoder", "head_frame",
+                                loc(tx, tilt_bearings.shaft_end(params) - 1, tz, rx=90)),
     ]
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
     # Four M3 through slots into the floor: the plate slides along x to tension the belt.

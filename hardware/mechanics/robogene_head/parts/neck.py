@@ -31,12 +31,13 @@ FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, draw
 
 
 def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
-                  at: tuple[float, float]) -> tuple[list, float, float, float]:
+                  at: tuple[float, float], shim_key: str | None = None) -> tuple[list, float, float, float]:
     """Bore of a floating bearing through a wall from `inner` to `outer` (coordinates along `axis`, either order):
     a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's groove
     and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over the
     bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting tools
-    and where the bearing, the shim and the ring start (their inner faces) along the axis."""
+    and where the bearing, the shim and the ring start (their inner faces) along the axis. shim_key: a joint's own
+    shim instead of geometry.bearing_seats.spacer."""
     seats = params.geometry("bearing_seats")
     bearing = params.purchased(params.drive(joint).text("bearing"))
     ring = params.purchased(seats.text("bearing_ring"))
@@ -47,10 +48,11 @@ def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float
     inner_ring = bearing.num("inner_ring_outside", positive=True)
     lugs = ring.num("lug_inner_diameter", positive=True)
     s = 0.0
-    if spacer(params):
-        shim = params.purchased(spacer(params))
+    shim_key = spacer(params) if shim_key is None else shim_key
+    if shim_key:
+        shim = params.purchased(shim_key)
         if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
-            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {spacer(params)} "
+            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {shim_key} "
                                  f"({shim.num('bore'):g} x {shim.num('outside'):g}) must fit the {bo:g} mm bore and clear "
                                  f"the {joint} bearing's inner ring ({inner_ring:g} across)")
         s = shim.num("thickness", positive=True)
