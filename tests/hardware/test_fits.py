@@ -45,7 +45,8 @@ def test_every_bearing_has_its_seat_and_journal(params, assembly, found):
     assert ("neck_pitch_stage", "journal", "k6", 1) in roles
     assert ("neck_pitch_front_lug", "housing", "H7", 1) in roles and ("neck_roll_stage", "journal", "k6", 1) in roles
     assert not any(f.role == "housing" for f in found.get("neck_pitch_stage", []))
-    assert ("head_floor", "housing", "M7", 1) in roles and ("neck_roll_stage", "journal", "h6", 1) in roles
+    # yaw: two bearings in the floor's boss on the fixed shaft, a pair of seats and a pair of journals
+    assert ("head_floor", "housing", "M7", 2) in roles and ("neck_roll_stage", "journal", "h6", 2) in roles
     assert ("eyes_tilt_frame", "journal", "k6", 2) in roles
     assert {("head_side_plate_left", "housing", "H7", 1), ("head_side_plate_right", "housing", "H7", 1)} <= roles
     catalog = params.root.node("purchased")

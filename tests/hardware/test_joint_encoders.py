@@ -10,7 +10,7 @@ from robogene_head_model.params import ParameterError
 from robogene_head import kinematics
 from robogene_head.checks import joint_encoders as check
 from robogene_head.geom import location
-from robogene_head.parts import joint_encoders, neck
+from robogene_head.parts import joint_encoders, neck, tilt_bearings, yaw_bearings
 
 from param_variants import edited
 
@@ -68,11 +68,51 @@ def test_a_magnet_off_the_joints_axis_is_caught_as_it_swings_round_the_ic(params
 
 
 def test_the_bracket_follows_the_shaft_end_it_faces(tmp_path):
-    """A tilt shaft standing further out of its plate moves the holder, the magnet and the bracket's plate with it:
-    the gap stays the bracket's."""
+    """A tilt journal standing further out of its bearing's boss moves the holder, the magnet and the bracket's plate
+    with it: the gap stays the bracket's, the feet still stand on the plate's outer face round the boss."""
     params, report = _encoders(tmp_path, lambda d: d["geometry"]["joint_encoders"]["holder"].update(protrusion=7))
     assert report.ok, report.failures
-    assert joint_encoders.ends(params)["eyes_tilt"].face == -7
+    boss = params.geometry("tilt_bearings", "boss").num("thickness")
+    end = joint_encoders.ends(params)["eyes_tilt"]
+    assert end.face == pytest.approx(-7 - boss) and end.exit == pytest.approx(-7)
+
+
+def test_the_yaw_and_tilt_ends_are_the_bearings_shaft_ends(params):
+    """The yaw shaft ends above the upper bearing's ring (yaw_bearings), the right tilt journal beyond its boss
+    (tilt_bearings): the encoders are placed from those ends, and their brackets stand on the faces really there."""
+    ends = joint_encoders.ends(params)
+    yaw, tilt = ends["neck_yaw"], ends["eyes_tilt"]
+    ze = yaw_bearings.shaft_end(params)
+    assert ze > yaw_bearings.layout(params).top
+    assert yaw.frame.toTuple()[0] == pytest.approx((0, 0, ze))
+    assert yaw.face == pytest.approx(-ze)                         # the floor's top face, z 0
+    lay = tilt_bearings.layout(params)
+    hw = params.geometry("head", "floor").num("half_width")
+    assert tilt.frame.toTuple()[0][1] == pytest.approx(tilt_bearings.shaft_end(params))
+    assert tilt_bearings.shaft_end(params) == pytest.approx(-lay.outer - joint_encoders.shaft_protrusion(params))
+    assert tilt.face == pytest.approx(tilt_bearings.shaft_end(params) + hw)   # the right plate's outer face
+
+
+def test_the_yaw_magnets_pocket_stays_clear_of_the_upper_rings_groove(params):
+    """The pocket in the yaw shaft's top runs down beside the upper DIN 471 groove: the shaft keeps a wall of more
+    than 1 mm between the magnet and the ring in the groove (the groove is 14.3 across, the pocket 6.05)."""
+    parts = {p.name: p for p in neck.build(params) + joint_encoders.build(params)}
+    poses = kinematics.link_poses(params, {})
+    magnet, ring = (parts[n].shape.moved(location(poses[parts[n].link]))
+                    for n in ("neck_yaw_encoder_magnet", "neck_yaw_ring_upper"))
+    m, r = magnet.BoundingBox(), ring.BoundingBox()
+    assert m.zmin < r.zmax and r.zmin < m.zmax                     # side by side along the shaft
+    assert _distance(magnet, ring) > 1.0
+
+
+@pytest.mark.parametrize("joint, feet, words", [
+    ("neck_yaw", [[0, -17], [0, 17]], r"feet\[0\]: the foot at \(0, -17\) reaches within 0\.8 of the 30 mm boss"),
+    ("eyes_tilt", [[-10, 12], [10, 12]], r"feet\[0\]: the foot at \(-10, 12\) reaches within 0\.8 of the 27 mm boss"),
+])
+def test_a_foot_on_the_bearings_boss_is_refused(tmp_path, joint, feet, words):
+    params = edited(tmp_path, lambda d: d["geometry"]["joint_encoders"]["joints"][joint].update(feet=feet))
+    with pytest.raises(ParameterError, match=rf"geometry\.joint_encoders\.joints\.{joint}\.{words}"):
+        joint_encoders.build(params)
 
 
 def test_magnets_sit_in_their_pockets_and_brackets_on_their_faces(params, assembly):

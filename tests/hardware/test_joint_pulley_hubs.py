@@ -157,7 +157,7 @@ def _yaw_set_screws_reached(params, angles):
                                                         and n != "neck_roll_stage"]
     pulley = ["neck_yaw_joint_pulley"] + [n for n in parts if n.startswith("neck_yaw_pulley_set_screw_")]
     steps = [{"name": "neck", "parts": there, "fixture": True},
-             {"name": "yaw pulley", "parts": ["neck_yaw_joint_pulley"], "from": [[0, 0, 40]], "fits": ["neck_roll_stage"],
+             {"name": "yaw pulley", "parts": ["neck_yaw_joint_pulley"], "from": [[0, 0, 70]], "fits": ["neck_roll_stage"],
               "fasteners": ["neck_yaw_pulley_set_screw_*"]}]
     data = {"drivers": {"hex-1.5": {"blade": 1.8, "length": 60, "handle": 20}},
             "screw_drivers": {"iso4029-M3": "hex-1.5"}, "subassemblies": {}, "sequence": steps}

@@ -26,7 +26,7 @@ SAMPLE_POSES = [
 AXIS_PARTS = {
     "neck_pitch": ["neck_pitch_bearing_right", "neck_pitch_bearing_ring"],
     "neck_roll": ["neck_roll_bearing_front", "neck_roll_bearing_ring"],
-    "neck_yaw": ["neck_yaw_bearing", "neck_yaw_joint_pulley"],
+    "neck_yaw": ["neck_yaw_bearing_lower", "neck_yaw_bearing_upper", "neck_yaw_joint_pulley"],
     "eyes_tilt": ["eyes_tilt_bearing_left", "eyes_tilt_bearing_right", "eyes_tilt_joint_pulley"],
     "left_eye_pan": ["left_eye_cup"],
     "right_eye_pan": ["right_eye_cup"],

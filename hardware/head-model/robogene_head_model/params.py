@@ -24,6 +24,10 @@ PURCHASED_KINDS = {
     "joint_encoder": ("bits", "length", "width", "height", "mass"),
     "bearing": ("bore", "outside", "width", "mass"),
     "retaining_ring": ("bore", "groove_diameter", "groove_width", "thickness", "inner_diameter", "mass"),
+    # an external ring (DIN 471) on a shaft: the room its lugs need as mounted (lug_outer_diameter), the shaft it
+    # needs beyond its groove (groove_edge)
+    "shaft_ring": ("shaft", "groove_diameter", "groove_width", "thickness", "groove_edge", "outside_diameter",
+                   "lug_outer_diameter", "mass"),
     "shim": ("bore", "outside", "thickness", "mass"),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),

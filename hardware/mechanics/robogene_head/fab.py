@@ -22,7 +22,7 @@ from robogene_head_model import joint_config
 from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
-from . import (drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
+from . import (bearing_loads, drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
                sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
@@ -186,6 +186,14 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     try:
         unpowered.enforce(released)
     except unpowered.UnpoweredError as exc:
+        raise BuildError(str(exc)) from None
+    # The bearings against their static load rating: the table goes into the package whether or not it passes.
+    loads = bearing_loads.analyse(params, parts, props)
+    _write(out / "reports" / "bearing-loads.txt", bearing_loads.format_table(loads) + "\n")
+    _write(out / "reports" / "bearing-loads.json", bearing_loads.dumps(loads))
+    try:
+        bearing_loads.enforce(loads)
+    except bearing_loads.BearingLoadError as exc:
         raise BuildError(str(exc)) from None
     # The eyes' error against the stereo budget, term by term, and each joint's torque path against its drive's peak
     # torque: reported, so that docs/fabricate.md states them from the package. Neither fails the build yet: the eye

@@ -45,6 +45,7 @@ class Step:
     press: bool = False           # a bearing pressed in: straight along its axis, with an arbor behind it
     flexible: str = ""            # placed by hand, not swept (belts, circlips): why
     access: tuple[str, np.ndarray] | None = None   # flexible part: a tool (driver name) along this axis
+    straddles: list[str] = field(default_factory=list)   # parts the tool goes round (an external ring's shaft)
     fixture: bool = False         # the first part of a context: it is held, not moved
     subassembly: str = ""
     why: str = ""
@@ -205,10 +206,12 @@ def _step(raw, where: str, context: str, number: int, names: list[str], drivers:
             raise SequenceError(f"{where}.access: expected {{driver: <a driver>, along: [x, y, z]}}")
         along = _vec(a.get("along"), f"{where}.access.along")
         access = (a["driver"], along / np.linalg.norm(along))
+    straddles = _names(raw["access"].get("straddles", []), f"{where}.access.straddles", names) \
+        if access and raw["access"].get("straddles") else []
     step = Step(context, number, name, parts, path,
                 fits=_names(raw.get("fits", []), f"{where}.fits", names) if raw.get("fits") else [],
                 fasteners=_names(raw.get("fasteners", []), f"{where}.fasteners", names) if raw.get("fasteners") else [],
-                driver=driver, press=bool(raw.get("press", False)), flexible=flexible, access=access,
+                driver=driver, press=bool(raw.get("press", False)), flexible=flexible, access=access, straddles=straddles,
                 fixture=fixture, subassembly=sub, why=str(raw.get("why", "")))
     if step.press and (len(step.parts) != 1 or len(step.path) != 2):
         raise SequenceError(f"{where}.press: a pressed step moves one bearing along one straight line")

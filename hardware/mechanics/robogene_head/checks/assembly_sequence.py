@@ -20,7 +20,8 @@ Screws. Each screw goes in along its axis: a cylinder of its head's diameter (a 
 driver's blade and then its handle beyond the blade's length, must be clear of everything in place until they
 leave the bounding box of the assembly so far. Pressed bearings: the path is one straight move along the
 bearing's axis and an arbor (the outer ring's diameter less 1 mm) behind it must be clear likewise. Flexible
-parts (belts, circlips) are placed by hand, not swept; a circlip's pliers get the same access check.
+parts (belts, circlips) are placed by hand, not swept; a circlip's pliers get the same access check (an external
+ring's pliers go round the shaft it sits on, which the step names under access.straddles).
 """
 from __future__ import annotations
 
@@ -305,8 +306,9 @@ class _Checker:
         bb = self.w.bbox(step.parts)
         centre = (bb[0] + bb[1]) / 2
         start = centre + along * _half_extent(bb, along)
+        # an external ring's pliers straddle the shaft the ring goes on: the tool is drawn solid, so that shaft is left out
         self._tool(step, placed, result, f"{'/'.join(step.parts)} ({driver.name})", start, along, driver.blade,
-                   driver.length, driver.handle, exclude=set(step.parts))
+                   driver.length, driver.handle, exclude=set(step.parts) | set(step.straddles))
 
     def _tool(self, step: Step, placed: list[str], result: StepResult, label: str, start, direction, diameter: float,
               blade_length: float, handle: float, blade: float | None = None, exclude=frozenset()) -> None:

@@ -39,8 +39,10 @@ FITS = [
     ("neck_roll_gearhead", "neck_roll_stage"),
     ("neck_pitch_hub_screw_*", "neck_pitch_gearhead"),   # the set screws' points on the gearhead's shaft
     ("neck_roll_hub_screw_*", "neck_roll_gearhead"),
-    ("neck_yaw_bearing", "neck_roll_stage"),
+    ("neck_yaw_bearing_*", "neck_roll_stage"),
+    ("neck_yaw_shim_*", "neck_yaw_bearing_*"),      # the shims on the shaft against the inner rings
     ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
+    ("eyes_tilt_clip", "eyes_tilt_bearing_right"),   # the clip on the journal against the fixed bearing's inner ring
     ("*_eye_pan_gearhead", "*_eye_hub"),              # the hub's bore on the pan shaft
     ("*_eye_pan_gearhead", "*_eye_hub_set_screw_*"),  # and its set screws' points
     ("neck_yaw_belt", "neck_yaw_joint_pulley"),     # the belt runs on the pulley of the other link

@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import eye_hubs, eye_stops, gearhead_screws, joint_encoders, mounts, purchased
+from . import eye_hubs, eye_stops, gearhead_screws, mounts, purchased, tilt_bearings
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -68,8 +68,9 @@ def build(params: HeadParameters) -> list[Part]:
         geom.box(-al_ / 2, al_ / 2, -arm_out, -arm_in, z_top - pt, ah),
         geom.cyl("y", tilt_bearing.num("bore"), arm_out - 1,                         # tilt shafts, the left one
                  hw + pulley_gap + pw + mounts.joint_hub_length(params)),             # through the pulley's hub
-        # the right one stands out of the side plate for the joint encoder's magnet holder
-        geom.cyl("y", tilt_bearing.num("bore"), -hw - joint_encoders.shaft_protrusion(params), -arm_out + 1),
+        # the right journal (out beyond its boss for the joint encoder's magnet holder), the collars against both
+        # inner rings
+        *tilt_bearings.frame_features(params)[0],
     )
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
     # the eye cups.
@@ -84,13 +85,14 @@ def build(params: HeadParameters) -> list[Part]:
                               for s in (1, -1)],
                      *[t.moved(f) for f in flanges.values()
                        for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)],
-                     *stop_holes,
+                     *stop_holes, *tilt_bearings.frame_features(params)[1],
                      # flats for the joint pulley's set screws on the left tilt shaft, along the pulley's hub
                      *[t.moved(pulley_at) for t in mounts.shaft_flats(params, "eyes_tilt", tilt_bearing.num("bore"),
                                                                       outboard=True)])
     parts = [Part("eyes_tilt_frame", "eyes_tilt_frame", "eyes_tilt_link", "machined", geom.single_solid(frame, "tilt frame"),
                   material="aluminium-6082", color=ALUMINIUM,
                   note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
+    parts += [p for p in tilt_bearings.right_parts(params) if p.link == "eyes_tilt_link"]   # the clip on the journal
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
     # The joint pulley's hub stands outboard of it; its set screws bear on the flats of the left tilt shaft.

@@ -10,7 +10,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import gearhead_screws, head_joins, joint_encoders, mounts, neck, purchased, tilt_stops
+from . import gearhead_screws, head_joins, joint_encoders, mounts, neck, purchased, tilt_bearings, tilt_stops, yaw_bearings
 from .base import ALUMINIUM, DARK, PRINTED, Part, loc
 YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 CLAMP_SCREW = "iso7380-M3x8"   # the tilt motor clamp's two screws into the back plate (geometry.head.tilt_motor_clamp)
@@ -29,7 +29,6 @@ def build(params: HeadParameters) -> list[Part]:
     ym = h.num("yaw_motor_x")
     tm = h.node("tilt_motor")
     tmx, tmz = tm.num("x"), tm.num("z")
-    yaw_bearing = params.purchased(params.drive("neck_yaw").text("bearing"))
     tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
     al = dict(material="aluminium-6082", color=ALUMINIUM)
     joins = head_joins.build(params)
@@ -40,8 +39,9 @@ def build(params: HeadParameters) -> list[Part]:
     yaw_fixings, yaw_slot = mounts.mount_fixings(params, "neck_yaw"), mounts.mount_slot(params, "neck_yaw")
     yaw_plate = mounts.mount_thickness(params, "neck_yaw")
     m3 = params.purchased(mounts.FIXING_SCREW).num("diameter")   # tapped holes are drawn at the thread
-    floor = geom.cut(geom.box(x0, x1, -hw, hw, -ft, 0),
-                     geom.cyl("z", yaw_bearing.num("outside"), -ft - 1, 1),
+    # the yaw bearings' boss stands on the floor (yaw_bearings)
+    floor = geom.cut(geom.union(geom.box(x0, x1, -hw, hw, -ft, 0), yaw_bearings.boss(params)),
+                     *yaw_bearings.housing_tools(params),
                      *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
                      *[geom.cyl("z", m3, -ft - 1, 1, (ym + fx, fy)) for fx, fy in yaw_fixings],
                      *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(params, yaw_gear.num("diameter"),
@@ -52,18 +52,20 @@ def build(params: HeadParameters) -> list[Part]:
     stop_pins, stop_holes = tilt_stops.pins(params, inner, (tx, tz), "head_frame")
     tap_depth = head_joins.tap_depth(params)
     side = geom.cut(geom.box(sx0, sx1, inner, hw, 0, sh),
-                    geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz)),
                     geom.cyl("y", mounts.hub_hole(params, tilt_gear.num("shaft_diameter")), inner - 1, hw + 1, (tmx, tmz)),
                     *[t.moved(tilt_flange) for t in gearhead_screws.holes(params, tilt_gear.num("diameter"), st)],
                     # M3 tapped holes for the face plate screws, modelled at the thread's size like every
                     # tapped hole of the head (the drawing's note gives the tap drill)
                     *[geom.cyl("x", m3, sx1 - tap_depth, sx1 + 1, (inner + st / 2, z)) for z in face_z],
                     *joins.holes["head_side_plate"], *stop_holes)
-    side = geom.single_solid(side, "side plate")
-    # the tilt encoder's bracket screws into the right plate's outer face
-    side_right = geom.single_solid(geom.cut(side.mirror("XZ"),
+    # The left plate's through-bore holds the floating tilt bearing; the right plate's boss the fixed one
+    # (tilt_bearings); the tilt encoder's bracket screws into the right plate's outer face beside the boss.
+    side_right = geom.single_solid(geom.cut(geom.union(side.mirror("XZ"), tilt_bearings.right_boss(params)),
+                                            *tilt_bearings.right_seat_tools(params),
                                             *joint_encoders.face_holes(params, joint_encoders.ends(params)["eyes_tilt"])),
                                    "right side plate")
+    side = geom.single_solid(geom.cut(side, geom.cyl("y", tilt_bearing.num("outside"), inner - 1, hw + 1, (tx, tz))),
+                             "side plate")
     back = geom.single_solid(geom.cut(geom.box(x0, x0 + bt, -inner, inner, 0, bh), *joins.holes["head_back_plate"],
                                       *tilt_clamp_back_holes(params)), "back plate")
     top = geom.box(tb.num("x"), tb.num("x") + tb.num("width", positive=True), -inner, inner, sh - tb.num("thickness"), sh)
@@ -72,19 +74,17 @@ def build(params: HeadParameters) -> list[Part]:
 
     parts = [
         Part("head_floor", "head_floor", "head_frame", "machined", geom.single_solid(floor, "floor"),
-             note=notes["head_floor"], **al),
+             note=notes["head_floor"] + " " + yaw_bearings.HOUSING_NOTE, **al),
         Part("head_side_plate_left", "head_side_plate_left", "head_frame", "machined", side,
              note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
         Part("head_side_plate_right", "head_side_plate_right", "head_frame", "machined", side_right,
-             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE, **al),
+             note=notes["head_side_plate"] + " " + tilt_stops.PIN_NOTE + " " + tilt_bearings.BOSS_NOTE, **al),
         Part("head_back_plate", "head_back_plate", "head_frame", "machined", back, note=notes["head_back_plate"], **al),
         Part("head_top_bar", "head_top_bar", "head_frame", "machined", top, note=notes["head_top_bar"], **al),
-        purchased.bearing(params, "neck_yaw_bearing", params.drive("neck_yaw").text("bearing"), "head_frame",
-                          loc(z=-ft)),
+        *yaw_bearings.head_parts(params),
         purchased.bearing(params, "eyes_tilt_bearing_left", params.drive("eyes_tilt").text("bearing"), "head_frame",
                           loc(tx, inner, tz, rx=-90)),
-        purchased.bearing(params, "eyes_tilt_bearing_right", params.drive("eyes_tilt").text("bearing"), "head_frame",
-                          loc(tx, -inner, tz, rx=90)),
+        *[p for p in tilt_bearings.right_parts(params) if p.link == "head_frame"],
     ]
     # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
     # Four M3 through slots into the floor: the plate slides along x to tension the belt.

@@ -23,7 +23,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
-from . import purchased
+from . import purchased, tilt_bearings, yaw_bearings
 from .base import ALUMINIUM, Part, loc
 
 JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt")
@@ -40,6 +40,8 @@ class End:
     shaft_diameter: float
     face: float            # w of the face the feet stand on (0: flush with the shaft's end)
     holder: bool           # magnet in a holder on the shaft (True) or in a pocket bored in it
+    exit: float            # w of the face the shaft comes out of (what a holder on it stands off)
+    keep_out: float        # radius round the axis the feet stay clear of: a boss standing on the face (0: none)
 
 
 def node(params: HeadParameters) -> Node:
@@ -51,7 +53,8 @@ def _translate(origin, sign: float) -> cq.Location:
 
 
 def ends(params: HeadParameters) -> dict[str, End]:
-    """The four joints' shaft ends, from the same parameters the shafts are built from (parts/neck.py, eyes.py)."""
+    """The four joints' shaft ends, from the same parameters the shafts are built from (parts/neck.py, eyes.py,
+    yaw_bearings.py, tilt_bearings.py)."""
     up = params.geometry("neck_base", "upright")
     y_out = up.num("gap") / 2 + up.num("thickness")                       # right upright's outer face, at -y
     hp = params.joints["neck_pitch"].origin[2]
@@ -60,20 +63,30 @@ def ends(params: HeadParameters) -> dict[str, End]:
     zr = params.joints["neck_roll"].origin[2]
     hw = params.geometry("head", "floor").num("half_width")
     tx, _, tz = params.joints["eyes_tilt"].origin
-    p = holder_node(params).num("protrusion", positive=True)
     bore = {j: params.purchased(params.drive(j).text("bearing")).num("bore", positive=True) for j in JOINTS}
+    # yaw: the fixed shaft stands through the bearings' boss, its ring and shim, to yaw_bearings.shaft_end
+    ze = yaw_bearings.shaft_end(params)
+    yaw_boss = yaw_bearings.layout(params).boss / 2
+    # tilt: the right journal stands `protrusion` out of the fixed bearing's boss (tilt_bearings.shaft_end)
+    tilt = tilt_bearings.layout(params)
+    ye = tilt.shaft_end
+    tilt_boss = params.geometry("tilt_bearings", "boss").num("diameter", positive=True) / 2
     frames = {
         # pitch: the pitch stage's right journal ends in the right upright's outer face (u = x, v = z, w = -y)
-        "neck_pitch": ("neck_base", "neck_pitch_link", loc(0, -y_out, hp, rx=90), 0.0, False),
+        "neck_pitch": ("neck_base", "neck_pitch_link", loc(0, -y_out, hp, rx=90), 0.0, False, 0.0, 0.0),
         # roll: the roll stage's front journal ends in the front lug's outer face (u = -z, v = y, w = x)
-        "neck_roll": ("neck_pitch_link", "neck_roll_link", loc(x_front, 0, zr, ry=90), 0.0, False),
-        # yaw: the roll stage's fixed shaft ends in the head floor's top face, the yaw joint's origin (u = x, v = y)
-        "neck_yaw": ("head_frame", "neck_roll_link", loc(0, 0, 0), 0.0, False),
-        # tilt: the tilt frame's right shaft stands `protrusion` out of the right side plate (u = x, v = z, w = -y)
-        "eyes_tilt": ("head_frame", "eyes_tilt_link", loc(tx, -hw - p, tz, rx=90), -p, True),
+        "neck_roll": ("neck_pitch_link", "neck_roll_link", loc(x_front, 0, zr, ry=90), 0.0, False, 0.0, 0.0),
+        # yaw: the roll stage's fixed shaft ends ze above the head floor's top face, the yaw joint's origin (u = x,
+        # v = y); the bracket stands on the floor round the bearings' boss
+        "neck_yaw": ("head_frame", "neck_roll_link", loc(0, 0, ze), -ze, False, -ze + yaw_bearings.layout(params).top,
+                     yaw_boss),
+        # tilt: the right journal ends beyond the boss on the right side plate (u = x, v = z, w = -y); the bracket
+        # stands on the plate's outer face round the boss, the holder off the boss's face
+        "eyes_tilt": ("head_frame", "eyes_tilt_link", loc(tx, ye, tz, rx=90), ye + hw, True, ye + tilt.outer,
+                      tilt_boss),
     }
     out = {}
-    for joint, (mount, shaft, frame, face, holder) in frames.items():
+    for joint, (mount, shaft, frame, face, holder, exit_, keep_out) in frames.items():
         j = params.joints[joint]
         if j.parent == mount and j.child == shaft:
             shaft_frame = _translate(j.origin, -1) * frame
@@ -83,7 +96,7 @@ def ends(params: HeadParameters) -> dict[str, End]:
             raise ParameterError(f"{params.path}: joints.{joint}: the joint encoder expects it between {mount} and "
                                  f"{shaft}")
         # the yaw shaft is the yaw bearing's bore; the others are their bearings' journals
-        out[joint] = End(joint, mount, shaft, frame, shaft_frame, bore[joint], face, holder)
+        out[joint] = End(joint, mount, shaft, frame, shaft_frame, bore[joint], face, holder, exit_, keep_out)
     return out
 
 
@@ -158,9 +171,18 @@ def feet(params: HeadParameters, joint: str) -> list[tuple[float, float]]:
     return node(params).node("joints").node(joint).points("feet")
 
 
-def _check_feet(params: HeadParameters, joint: str) -> None:
-    """A foot stands beside the board, never under it (the board lies between the feet's tops and the plate)."""
+def _check_feet(params: HeadParameters, end: End) -> None:
+    """A foot stands beside the board, never under it (the board lies between the feet's tops and the plate), and
+    off the boss round the shaft by the fabricator's minimum (a foot merged into the boss cannot be machined as
+    drawn, and the boss's seat would take the screw's tapped hole)."""
+    joint = end.joint
     r = node(params).num("foot", positive=True) / 2
+    gap = params.geometry("clearances").num("minimum", positive=True)
+    for i, (u, v) in enumerate(feet(params, joint)):
+        if end.keep_out and math.hypot(u, v) - r < end.keep_out + gap - 1e-9:
+            raise ParameterError(f"{params.path}: geometry.joint_encoders.joints.{joint}.feet[{i}]: the foot at "
+                                 f"({u:g}, {v:g}) reaches within {gap:g} of the {2 * end.keep_out:g} mm boss round the "
+                                 f"shaft: its centre must be at least {end.keep_out + gap + r:g} from the axis")
     corners = _outline(params, joint)
     u0, u1 = min(c[0] for c in corners), max(c[0] for c in corners)
     v0, v1 = min(c[1] for c in corners), max(c[1] for c in corners)
@@ -192,7 +214,7 @@ def _screw_seat(params: HeadParameters, end: End, top: float) -> float:
 def bracket(params: HeadParameters, end: End) -> cq.Solid:
     """The bracket in the end frame: a plate on the board's back face over its holes, with feet down to the face."""
     n = node(params)
-    _check_feet(params, end.joint)
+    _check_feet(params, end)
     lv = levels(params, end)
     holes = board_holes(params, end.joint)
     margin, r = n.num("margin", positive=True), n.num("foot", positive=True) / 2
@@ -249,7 +271,7 @@ def shaft_cuts(params: HeadParameters, end: End) -> list[cq.Shape]:
 
 
 def shaft_protrusion(params: HeadParameters) -> float:
-    """How far the tilt frame's right shaft stands out of the right side plate for the magnet holder."""
+    """How far the tilt frame's right journal stands out of its bearing's boss for the magnet holder."""
     return holder_node(params).num("protrusion", positive=True)
 
 
@@ -262,13 +284,13 @@ def _holder(params: HeadParameters, end: End) -> cq.Solid:
     if outside < end.shaft_diameter + 2 or outside < md + 2:
         raise ParameterError(f"{params.path}: geometry.joint_encoders.holder.outside: {outside:g} leaves under 1 mm of "
                              f"wall round the {end.shaft_diameter:g} mm shaft or the {md:g} mm magnet")
-    if end.face + gap >= -1.0:
+    if end.exit + gap >= -1.0:
         raise ParameterError(f"{params.path}: geometry.joint_encoders.holder: the shaft stands "
-                             f"{-end.face:g} mm out, under the {gap:g} mm gap and 1 mm of bore")
+                             f"{-end.exit:g} mm out, under the {gap:g} mm gap and 1 mm of bore")
     pocket = md + node(params).num("pocket_clearance", positive=True)
     top = web + mt
-    body = geom.cyl("z", outside, end.face + gap, top)
-    return geom.single_solid(geom.cut(body, geom.cyl("z", end.shaft_diameter, end.face + gap - 1, 0.0),
+    body = geom.cyl("z", outside, end.exit + gap, top)
+    return geom.single_solid(geom.cut(body, geom.cyl("z", end.shaft_diameter, end.exit + gap - 1, 0.0),
                                       geom.cyl("z", pocket, web, top + 1)), "magnet holder")
 
 

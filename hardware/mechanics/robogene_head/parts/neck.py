@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import board_stack, drive_hubs, gearhead_screws, joint_encoders, mounts, purchased
+from . import board_stack, drive_hubs, gearhead_screws, joint_encoders, mounts, purchased, yaw_bearings
 from .base import ALUMINIUM, Part, loc
 
 SCREW = "iso7380-M3x12"
@@ -31,12 +31,13 @@ FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, draw
 
 
 def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
-                  at: tuple[float, float]) -> tuple[list, float, float, float]:
+                  at: tuple[float, float], shim_key: str | None = None) -> tuple[list, float, float, float]:
     """Bore of a floating bearing through a wall from `inner` to `outer` (coordinates along `axis`, either order):
     a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's groove
     and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over the
     bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting tools
-    and where the bearing, the shim and the ring start (their inner faces) along the axis."""
+    and where the bearing, the shim and the ring start (their inner faces) along the axis. shim_key: a joint's own
+    shim instead of geometry.bearing_seats.spacer."""
     seats = params.geometry("bearing_seats")
     bearing = params.purchased(params.drive(joint).text("bearing"))
     ring = params.purchased(seats.text("bearing_ring"))
@@ -47,10 +48,11 @@ def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float
     inner_ring = bearing.num("inner_ring_outside", positive=True)
     lugs = ring.num("lug_inner_diameter", positive=True)
     s = 0.0
-    if spacer(params):
-        shim = params.purchased(spacer(params))
+    shim_key = spacer(params) if shim_key is None else shim_key
+    if shim_key:
+        shim = params.purchased(shim_key)
         if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
-            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {spacer(params)} "
+            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {shim_key} "
                                  f"({shim.num('bore'):g} x {shim.num('outside'):g}) must fit the {bo:g} mm bore and clear "
                                  f"the {joint} bearing's inner ring ({inner_ring:g} across)")
         s = shim.num("thickness", positive=True)
@@ -297,11 +299,11 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
                        geom.cyl("x", hub.diameter, -x_lug + hub.clearance, -bl / 2 + 1),      # the drive's hub
-                       geom.cyl("z", shaft, bh / 2 - 1, zy))
+                       geom.cyl("z", shaft, bh / 2 - 1, zy + yaw_bearings.shaft_end(params)))
     # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
     at = loc(z=zy - yaw_pulley_drop(params))
     stage = geom.cut(stage, geom.cyl("x", gear.num("shaft_diameter"), -x_out - 1, tip + BORE_RUNOUT),
-                     *hub.tapped_holes(), *hub.lands(),
+                     *hub.tapped_holes(), *hub.lands(), *yaw_bearings.shaft_grooves(params, zy),
                      *[t.moved(at) for t in mounts.shaft_flats(params, "neck_yaw", shaft, outboard=False)],
                      *[t for j in ("neck_roll", "neck_yaw") for t in joint_encoders.shaft_cuts(params, joint_encoders.ends(params)[j])])
     teeth = int(params.geometry("pulleys", "yaw").num("joint_teeth", positive=True))
@@ -314,7 +316,8 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
              mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
              color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft, joint="neck_yaw")),
     ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
-         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))]
+         for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))] \
+        + yaw_bearings.shaft_parts(params, zy)
 
 
 def pitch_hub_of(params: HeadParameters, at: tuple[float, float]) -> drive_hubs.Hub:

@@ -1,0 +1,237 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""The joints' ball bearings against their basic static load rating C0: a check of the build.
+
+For each joint under bearing_loads.joints, the bearings are found in the assembly (ball bearings whose axis is the
+joint's axis) and they carry the body beyond the joint (the links past it, with the payloads of drive_sizing) at
+every pose of a grid over all the joints' ranges, with and without the payloads:
+  F = m (a - g)         the force the bearings put on the body: gravity and the acceleration of its centre of mass
+  M = c x F + I alpha   the moment about the joint's origin
+where a and alpha come from the angular accelerations of the joint and every joint before it (drive_sizing.
+accelerations), each at its full value with either sign. The force along the axis is Fa; across it, the force and
+the moment split into a radial load on each of two bearings by their places along the axis:
+  R1 + R2 = F_radial,  t1 R1 + t2 R2 = M_radial x axis
+SKF's equivalent static load of a deep-groove ball bearing, P0 = 0.6 Fr + 0.5 Fa and at least Fr (skf.com, deep
+groove ball bearings, "Loads"), is charged with the whole Fa on each bearing, which ever of them locates that way;
+C0 / P0 must reach bearing_loads.static_safety. A joint whose body tips on one bearing fails outright: a deep-groove
+bearing has no moment rating and tilts within its internal clearance before it takes one.
+Left out: the centripetal terms of the joints' speeds, the belt's pull on the yaw shaft, and the gearheads' own
+output bearings on pitch and roll (their ratings are FAULHABER's, not in the parameter file)."""
+from __future__ import annotations
+
+import itertools
+import json
+import math
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
+
+from . import drive_sizing, kinematics
+from .massprops import MassProps, combine
+
+GRAVITY = 9.80665
+ON_AXIS = 1e-3        # mm: a bearing's centre this close to the joint's axis sits on it
+GRID = 5              # samples per joint over its range
+TIPPING = 1e-6        # N m: less than this across the axis is no tipping moment
+
+
+class BearingLoadError(RuntimeError):
+    """A bearing below its static safety; the message is the table."""
+
+
+@dataclass(frozen=True)
+class BearingLoad:
+    joint: str
+    bearing: str          # the part's name
+    key: str              # catalogue key
+    at_mm: float          # along the joint's axis from its origin
+    c0_kN: float
+    radial_N: float       # at the worst pose
+    axial_N: float
+    p0_N: float
+    safety: float         # C0 / P0
+    case: str
+    pose: dict
+
+
+@dataclass(frozen=True)
+class Report:
+    required: float
+    loads: list[BearingLoad]
+    problems: list[str]     # joints that cannot be checked as built (one bearing carrying a tipping moment)
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems and all(b.safety >= self.required for b in self.loads)
+
+
+def _node(params: HeadParameters):
+    return params.root.node("bearing_loads")
+
+
+def required_safety(params: HeadParameters) -> float:
+    return _node(params).num("static_safety", minimum=1.0)
+
+
+def checked_joints(params: HeadParameters) -> list[str]:
+    joints = _node(params).raw("joints")
+    if not isinstance(joints, list) or not all(j in CHAIN_JOINTS for j in joints):
+        raise ParameterError(f"{params.path}: bearing_loads.joints: expected a list of chain joints "
+                             f"({', '.join(CHAIN_JOINTS)}), got {joints!r}")
+    return joints
+
+
+def bearings_on_axis(params: HeadParameters, parts: list, joint: str) -> list[tuple[float, object]]:
+    """(place along the joint's axis, part) of each ball bearing whose axis is the joint's, at the zero pose."""
+    poses = kinematics.link_poses(params, {})
+    origin, axis = kinematics.joint_axes_world(params, {})[joint]
+    catalog = params.root.node("purchased")
+    found = []
+    for part in parts:
+        if part.kind != "purchased" or not catalog.has(part.design) \
+                or params.purchased(part.design).text("kind") != "bearing":
+            continue
+        pose = poses[part.link]
+        centre = part.shape.Center()
+        world = pose[:3, :3] @ np.array([centre.x, centre.y, centre.z]) + pose[:3, 3]
+        d = world - origin
+        off = d - np.dot(d, axis) * axis
+        ring_axis = _ring_axis(part, pose)
+        if np.linalg.norm(off) < ON_AXIS and abs(abs(np.dot(ring_axis, axis)) - 1) < 1e-6:
+            found.append((float(np.dot(d, axis)), part))
+    return sorted(found, key=lambda f: f[0])
+
+
+def _ring_axis(part, pose: np.ndarray) -> np.ndarray:
+    """The bearing envelope's axis (its design frame's z) in the world frame."""
+    m = part.placement.wrapped.Transformation()
+    z = np.array([m.Value(1, 3), m.Value(2, 3), m.Value(3, 3)])
+    return pose[:3, :3] @ z
+
+
+def _distal(params: HeadParameters, joint: str) -> list[str]:
+    child = params.joints[joint].child
+    out, todo = [], [child]
+    while todo:
+        link = todo.pop()
+        out.append(link)
+        todo += [params.joints[j].child for j in CHAIN_JOINTS if params.joints[j].parent == link]
+    return out
+
+
+def _upstream(params: HeadParameters, joint: str) -> list[str]:
+    """The joint and every joint between it and the neck base."""
+    by_child = {params.joints[j].child: j for j in CHAIN_JOINTS}
+    out, link = [], params.joints[joint].child
+    while link in by_child:
+        j = by_child[link]
+        out.append(j)
+        link = params.joints[j].parent
+    return out
+
+
+def _grid(params: HeadParameters) -> list[dict[str, float]]:
+    axes = [np.linspace(params.joints[j].lower, params.joints[j].upper, GRID) for j in CHAIN_JOINTS]
+    return [dict(zip(CHAIN_JOINTS, map(float, q))) for q in itertools.product(*axes)
+            if q[4] == q[5]]   # the two eye pans together: their share of the load is small
+
+
+def _loads_at(params, props, joint, distal, upstream, accels, q):
+    """(axial force N, radial force vector N, radial moment about the origin N m, axis) in the joint's child frame,
+    the worst over the accelerations' signs is left to the caller: one entry per sign combination."""
+    poses = kinematics.link_poses(params, q)
+    frame = poses[params.joints[joint].child]
+    inv = np.linalg.inv(frame)
+    body = combine([props[link].moved(inv @ poses[link]) for link in distal if link in props])
+    m, c, inertia = body.mass, body.com * 1e-3, body.inertia * 1e-6
+    rot = frame[:3, :3]
+    g = rot.T @ np.array([0.0, 0.0, -GRAVITY])
+    axis = np.array(params.joints[joint].axis, dtype=float)
+    terms = []
+    for j in upstream:
+        pose = inv @ poses[params.joints[j].child]
+        u = pose[:3, :3] @ np.array(params.joints[j].axis, dtype=float)
+        p = pose[:3, 3] * 1e-3
+        terms.append((accels[j] * u, accels[j] * np.cross(u, c - p)))
+    out = []
+    for signs in itertools.product((1.0, -1.0), repeat=len(terms)):
+        alpha = sum(s * t[0] for s, t in zip(signs, terms))
+        acc = sum(s * t[1] for s, t in zip(signs, terms))
+        force = m * (acc - g)
+        moment = np.cross(c, force) + inertia @ alpha
+        axial = float(np.dot(force, axis))
+        out.append((axial, force - axial * axis, moment - np.dot(moment, axis) * axis, axis))
+    return out
+
+
+def analyse(params: HeadParameters, parts: list, props: dict[str, MassProps]) -> Report:
+    required = required_safety(params)
+    cases = {"bare": props, "loaded": drive_sizing.with_payloads(params, props)}
+    grid = _grid(params)
+    loads, problems = [], []
+    for joint in checked_joints(params):
+        on_axis = bearings_on_axis(params, parts, joint)
+        distal, upstream = _distal(params, joint), _upstream(params, joint)
+        accels = {j: math.radians(drive_sizing.acceleration(params, j)) for j in upstream}
+        worst: dict[str, tuple] = {}
+        tipping = 0.0
+        for case, mp in cases.items():
+            for q in grid:
+                for axial, force, moment, axis in _loads_at(params, mp, joint, distal, upstream, accels, q):
+                    tipping = max(tipping, float(np.linalg.norm(moment)))
+                    if len(on_axis) != 2:
+                        continue
+                    (t1, _), (t2, _) = on_axis
+                    t1, t2 = t1 * 1e-3, t2 * 1e-3
+                    w = np.cross(moment, axis)
+                    r2 = (w - t1 * force) / (t2 - t1)
+                    r1 = force - r2
+                    for (t, part), r in zip(on_axis, (r1, r2)):
+                        fr = float(np.linalg.norm(r))
+                        p0 = max(fr, 0.6 * fr + 0.5 * abs(axial))
+                        if part.name not in worst or p0 > worst[part.name][2]:
+                            worst[part.name] = (fr, axial, p0, case, q)
+        if len(on_axis) < 2:
+            if tipping > TIPPING:
+                problems.append(f"{joint}: {len(on_axis)} ball bearing on its axis carries a tipping moment of up to "
+                                f"{tipping:.2f} N m: a deep-groove bearing has no moment rating (it tilts within its "
+                                f"clearance first); it needs two, spaced along the axis")
+            continue
+        if len(on_axis) > 2:
+            problems.append(f"{joint}: {len(on_axis)} ball bearings on its axis: the check splits the load over two")
+            continue
+        if abs(on_axis[1][0] - on_axis[0][0]) < 1e-6:
+            problems.append(f"{joint}: its two bearings sit at the same place along the axis")
+            continue
+        for t, part in on_axis:
+            fr, axial, p0, case, q = worst[part.name]
+            c0 = params.purchased(part.design).num("static_load_rating_kN", positive=True)
+            loads.append(BearingLoad(joint, part.name, part.design, t, c0, fr, abs(axial), p0, c0 * 1e3 / p0, case,
+                                     {k: round(v, 3) for k, v in q.items()}))
+    return Report(required, loads, problems)
+
+
+def format_table(report: Report) -> str:
+    lines = [f"Bearing loads: worst case over the whole range, required static safety C0/P0 >= {report.required:g}",
+             "joint       bearing                     at (mm)  C0 (kN)  Fr (N)  Fa (N)  P0 (N)  C0/P0  case",
+             ]
+    for b in report.loads:
+        flag = "ok" if b.safety >= report.required else "TOO SMALL"
+        lines.append(f"{b.joint:<11} {b.bearing:<27} {b.at_mm:7.1f} {b.c0_kN:8.3f} {b.radial_N:7.1f} {b.axial_N:7.1f} "
+                     f"{b.p0_N:7.1f} {b.safety:6.1f}  {b.case} {flag}")
+    lines += [f"FAIL {p}" for p in report.problems]
+    return "\n".join(lines)
+
+
+def dumps(report: Report) -> str:
+    return json.dumps({"required_static_safety": report.required, "ok": report.ok, "problems": report.problems,
+                       "bearings": [dict(asdict(b), ok=b.safety >= report.required) for b in report.loads]}, indent=1)
+
+
+def enforce(report: Report) -> None:
+    if not report.ok:
+        low = ", ".join(f"{b.bearing} ({b.safety:.2f})" for b in report.loads if b.safety < report.required)
+        raise BearingLoadError("bearings below their static safety or unable to carry their load"
+                               + (f": {low}" if low else "") + "\n" + format_table(report))

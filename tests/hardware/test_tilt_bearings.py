@@ -1,0 +1,116 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The eye tilt on a fixed and a floating bearing: the right one held both ways in the right plate's boss (shoulder,
+shim and DIN 472 ring) and on the journal (collar and DIN 6799 clip), the left one against its journal's collar with
+its outer ring free to slide in the left plate's through-bore; the seat refuses what would rub or has no room."""
+import pytest
+from OCP.BRepExtrema import BRepExtrema_DistShapeShape
+
+from robogene_head import bearing_loads, geom, kinematics, massprops
+from robogene_head.geom import location
+from robogene_head.parts import eyes, head_frame, joint_encoders, neck, tilt_bearings
+from robogene_head_model.params import ParameterError
+
+from param_variants import edited
+
+
+def _distance(a, b) -> float:
+    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
+    d.Perform()
+    return d.Value()
+
+
+@pytest.fixture(scope="module")
+def world(params):
+    poses = kinematics.link_poses(params, {})
+    parts = head_frame.build(params) + eyes.build(params) + joint_encoders.build(params)
+    return {p.name: p.shape.moved(location(poses[p.link])) for p in parts
+            if p.name.startswith(("eyes_tilt_", "head_side_plate_"))}
+
+
+def test_the_fixed_bearing_is_held_both_ways(params, world):
+    bearing, plate, frame = world["eyes_tilt_bearing_right"], world["head_side_plate_right"], world["eyes_tilt_frame"]
+    ring, shim, clip = world["eyes_tilt_bearing_ring"], world["eyes_tilt_bearing_spacer"], world["eyes_tilt_clip"]
+    # outer ring: against the plate's shoulder inside, the shim and the DIN 472 ring outside
+    assert _distance(bearing, plate) < 1e-6 and bearing.intersect(plate).Volume() < 1e-3
+    thickness = params.purchased(params.geometry("tilt_bearings").text("spacer")).num("thickness")
+    assert _distance(ring, bearing) == pytest.approx(thickness)
+    assert _distance(shim, bearing) < 1e-6 and _distance(ring, shim) < 1e-6
+    assert ring.intersect(plate).Volume() < 1e-3
+    # inner ring: against the journal's collar inside, the clip outside, the clip in its groove
+    assert _distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
+    assert _distance(clip, bearing) < 1e-6 and clip.intersect(frame).Volume() < 1e-3
+    lay = tilt_bearings.layout(params)
+    bb = bearing.BoundingBox()
+    assert bb.ymax == pytest.approx(lay.bearing)
+    assert frame.BoundingBox().ymin == pytest.approx(lay.shaft_end)
+
+
+def test_the_ring_lugs_stand_off_the_turning_inner_ring_and_clip(params, world):
+    """The DIN 472 ring's lugs (not modelled) reach in to lug_inner_diameter: a tube of that bore at the ring must
+    clear the clip and the journal, which turn."""
+    ring = params.purchased(neck.bearing_ring(params))
+    bb = world["eyes_tilt_bearing_ring"].BoundingBox()
+    tx, _, tz = params.joints["eyes_tilt"].origin
+    lugs = geom.tube("y", ring.num("groove_diameter"), ring.num("lug_inner_diameter"), bb.ymin, bb.ymax,
+                     (tx, tz))
+    assert _distance(lugs, world["eyes_tilt_clip"]) >= neck.LUG_GAP - 1e-6
+    assert _distance(lugs, world["eyes_tilt_frame"]) > 0
+
+
+def test_the_floating_bearing_sits_on_its_collar_and_slides_in_its_bore(params, world):
+    bearing, plate, frame = world["eyes_tilt_bearing_left"], world["head_side_plate_left"], world["eyes_tilt_frame"]
+    assert _distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
+    # no shoulder either side: the plate has no material inside the outer ring's diameter near the bearing
+    tx, _, tz = params.joints["eyes_tilt"].origin
+    bb = bearing.BoundingBox()
+    outside = params.purchased(params.drive("eyes_tilt").text("bearing")).num("outside")
+    for y0, y1 in ((bb.ymin - 0.5, bb.ymin), (bb.ymax, bb.ymax + 0.5)):
+        probe = geom.tube("y", outside - 0.1, outside - 4, y0, y1, (tx, tz))
+        assert probe.intersect(plate).Volume() < 1e-6
+    # the collar touches the inner ring only: it is within the inner ring's face
+    inner_ring = params.purchased(params.drive("eyes_tilt").text("bearing")).num("inner_ring_outside")
+    assert params.geometry("tilt_bearings").num("collar") <= inner_ring
+
+
+def test_the_journal_carries_the_magnet_holder_beyond_the_clip_and_the_boss(params, world):
+    """The right journal stands the holder's protrusion out of the boss's face; the holder on it stands off the
+    boss and the ring by the fabricator's minimum and clear of the clip inside the boss; the encoder's bracket stands
+    on the plate's outer face beside the boss."""
+    lay = tilt_bearings.layout(params)
+    end = world["eyes_tilt_frame"].BoundingBox().ymin
+    assert end == pytest.approx(-lay.outer - joint_encoders.shaft_protrusion(params))
+    holder, plate = world["eyes_tilt_magnet_holder"], world["head_side_plate_right"]
+    minimum = params.geometry("clearances").num("minimum")
+    assert _distance(holder, plate) >= minimum - 1e-6
+    assert _distance(holder, world["eyes_tilt_bearing_ring"]) >= minimum - 1e-6
+    assert _distance(holder, world["eyes_tilt_clip"]) > 0
+    assert holder.BoundingBox().ymax < -lay.outer                  # wholly outside the boss
+    bracket = world["eyes_tilt_encoder_bracket"]
+    hw = params.geometry("head", "floor").num("half_width")
+    assert bracket.BoundingBox().ymax == pytest.approx(-hw)        # on the plate's outer face
+    boss = tilt_bearings.right_boss(params).moved(location(kinematics.link_poses(params, {})["head_frame"]))
+    assert _distance(bracket, boss) >= minimum - 1e-6
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda d: d["purchased"]["din6799-5"].update(outside_diameter=12, lug_outer_diameter=12),
+     r"geometry\.tilt_bearings\.clip: din6799-5 \(12 across\) reaches beyond the skf-626-2Z's inner ring"),
+    (lambda d: d["geometry"]["tilt_bearings"].update(spacer="din988-13x19x0.5"),
+     r"geometry\.tilt_bearings\.spacer: din988-13x19x0\.5 \(0\.5 thick\) leaves the din472-19x1 ring's lugs"),
+    (lambda d: d["geometry"]["tilt_bearings"].update(collar=12), r"geometry\.tilt_bearings\.collar: 12 must be"),
+    (lambda d: d["geometry"]["tilt_bearings"]["boss"].update(thickness=3),
+     r"the wall holding the eyes_tilt bearing is 9 thick"),
+])
+def test_a_tilt_seat_that_cannot_hold_its_bearing_is_refused(tmp_path, edit, message):
+    with pytest.raises(ParameterError, match=message):
+        tilt_bearings.layout(edited(tmp_path, edit))
+
+
+@pytest.mark.timeout(900)
+def test_the_tilt_bearings_carry_the_eyes(params, assembly):
+    props = massprops.link_props(params, assembly.parts)
+    report = bearing_loads.analyse(params, assembly.parts, props)
+    tilt = [b for b in report.loads if b.joint == "eyes_tilt"]
+    assert sorted(b.bearing for b in tilt) == ["eyes_tilt_bearing_left", "eyes_tilt_bearing_right"]
+    assert all(b.safety >= report.required for b in tilt) and report.ok
