@@ -41,8 +41,9 @@ def _drop_spacer(d):
 
 
 @pytest.mark.parametrize("edit, message", [
-    (_drop_spacer, r"geometry\.bearing_seats\.spacer: the din472-19x1 ring's lugs reach in to 11, over the neck_pitch "
-                   r"bearing's inner ring \(12\.5 across\).*\(this one: 0\)"),
+    # the lugs' 10.4 is DIN 472's d4 for a 19 mm bore, the inner ring's 12.7 SKF's d1 for the 61800
+    (_drop_spacer, r"geometry\.bearing_seats\.spacer: the din472-19x1 ring's lugs reach in to 10\.4, over the "
+                   r"neck_pitch bearing's inner ring \(12\.7 across\).*\(this one: 0\)"),
     (lambda d: d["purchased"]["din988-13x19x0.5"].update(thickness=0.1), r"at least 0\.3 thick.*this one: 0\.1"),
     (lambda d: d["purchased"]["din988-13x19x0.5"].update(bore=12), r"must fit the 19 mm bore and clear"),
 ])
@@ -54,6 +55,6 @@ def test_a_ring_that_can_rub_the_inner_ring_is_refused(tmp_path, edit, message):
 def test_a_bearing_whose_inner_ring_the_lugs_clear_needs_no_shim(tmp_path):
     def edit(d):
         _drop_spacer(d)
-        d["purchased"]["skf-61800-2RS"].update(inner_ring_outside=10.5)
+        d["purchased"]["skf-61800-2RS"].update(inner_ring_outside=10.2)   # inside the lugs' 10.4
     names = {p.name for p in neck.build(edited(tmp_path, edit))}
     assert "neck_pitch_bearing_ring" in names and "neck_pitch_bearing_spacer" not in names
