@@ -26,11 +26,11 @@ def test_each_belt_wraps_both_its_pulleys_at_every_angle(params, assembly, joint
 
 def test_the_belt_loop_is_as_long_as_the_belt(params, assembly):
     """The back's inner edge runs on the pulleys' outside diameters: its length is the pitch-line length less
-    pi times the MXL pitch differential, within the slack of rounding up to whole teeth."""
-    pitch = params.geometry("pulleys").num("pitch_mxl")
+    pi times the pitch differential, within the slack of rounding up to whole teeth."""
     for key, joint, teeth in mounts.belts(params):
+        pitch = mounts.belt_pitch(params, joint)
         belt = next(p for p in assembly.parts if p.name == f"{joint}_belt")
-        stock = params.purchased(params.geometry("pulleys").text("belt"))
+        stock = params.purchased(mounts.belt_key(params, joint))
         width, back = stock.num("width"), stock.num("thickness") - stock.num("tooth_height")
         mean = belt.local.Volume() / width / back   # a band of constant thickness: area = mean perimeter x back
         expected = teeth * pitch - math.pi * mounts.pitch_differential(params) + math.pi * back
@@ -39,7 +39,7 @@ def test_the_belt_loop_is_as_long_as_the_belt(params, assembly):
 
 def test_a_belt_wider_than_the_pulleys_is_named(params, external, tmp_path):
     data = yaml.safe_load(params.path.read_text())
-    data["geometry"]["pulleys"]["width"] = 6
+    data["geometry"]["pulleys"]["tilt"]["width"] = 6
     path = tmp_path / "narrow.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ParameterError, match=r"purchased\.mxl-belt-6mm: a 6.4 mm wide belt does not run between "
