@@ -402,8 +402,9 @@ def test_mechanics_errors_are_placed_too(tree):
 
 def test_a_parameter_change_travels_to_every_output(tree):
     path = tree / "hardware" / "head-parameters.yaml"
-    path.write_text(path.read_text().replace("yaw: {motor_teeth: 14, joint_teeth: 36}",
-                                             "yaw: {motor_teeth: 14, joint_teeth: 40}"))
+    text = path.read_text()
+    assert "yaw: {motor_teeth: 14, joint_teeth: 36," in text
+    path.write_text(text.replace("yaw: {motor_teeth: 14, joint_teeth: 36,", "yaw: {motor_teeth: 14, joint_teeth: 40,"))
     configs = ["can-driver-config", "firmware-can"]
     outputs = render(tree, configs)
     ini = outputs["drivers/can/generated/head.ini"]

@@ -11,6 +11,8 @@ from robogene_head.checks import interference
 from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import build_all, mounts
 
+from param_variants import edited
+
 
 @pytest.mark.parametrize("joint, angles", [("neck_yaw", (-45, 0, 45)), ("eyes_tilt", (-30, 0, 30))])
 def test_each_belt_wraps_both_its_pulleys_at_every_angle(params, assembly, joint, angles):
@@ -26,11 +28,11 @@ def test_each_belt_wraps_both_its_pulleys_at_every_angle(params, assembly, joint
 
 def test_the_belt_loop_is_as_long_as_the_belt(params, assembly):
     """The back's inner edge runs on the pulleys' outside diameters: its length is the pitch-line length less
-    pi times the MXL pitch differential, within the slack of rounding up to whole teeth."""
-    pitch = params.geometry("pulleys").num("pitch_mxl")
+    pi times the pitch differential, within the slack of rounding up to whole teeth."""
     for key, joint, teeth in mounts.belts(params):
+        pitch = mounts.belt_pitch(params, joint)
         belt = next(p for p in assembly.parts if p.name == f"{joint}_belt")
-        stock = params.purchased(params.geometry("pulleys").text("belt"))
+        stock = params.purchased(mounts.belt_key(params, joint))
         width, back = stock.num("width"), stock.num("thickness") - stock.num("tooth_height")
         mean = belt.local.Volume() / width / back   # a band of constant thickness: area = mean perimeter x back
         expected = teeth * pitch - math.pi * mounts.pitch_differential(params) + math.pi * back
@@ -39,9 +41,33 @@ def test_the_belt_loop_is_as_long_as_the_belt(params, assembly):
 
 def test_a_belt_wider_than_the_pulleys_is_named(params, external, tmp_path):
     data = yaml.safe_load(params.path.read_text())
-    data["geometry"]["pulleys"]["width"] = 6
+    data["geometry"]["pulleys"]["tilt"]["width"] = 6
     path = tmp_path / "narrow.yaml"
     path.write_text(yaml.safe_dump(data))
     with pytest.raises(ParameterError, match=r"purchased\.mxl-belt-6mm: a 6.4 mm wide belt does not run between "
                                              r"the flanges of 6 mm pulleys \(4.8 mm apart\)"):
         build_all(load(path), external)
+
+
+def _tilt_on_xl(data):
+    """The tilt stage on XL 037 stock, 14T to 24T on 16 mm pulleys; yaw left on MXL (a check of the per-stage
+    geometry only: the head is not assembled)."""
+    data["purchased"]["xl-belt-037"] = {"kind": "belt", "profile": "XL", "width": 9.525, "thickness": 2.3,
+                                        "tooth_height": 1.27, "mass_per_metre": 0.03}
+    data["geometry"]["pulleys"]["tilt"].update(joint_teeth=24, belt="xl-belt-037", pitch=5.08, width=16)
+
+
+def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path):
+    """The tilt pulleys come out at XL diameters (14T: pitch 22.64, outside 22.13, flanges 1.5 beyond) and 16 mm wide,
+    its belt is cut from the XL stock to 2C + pi (D + d) / 2 + (D - d)^2 / 4C = 269.4 mm at the present 86.05 mm, so 54
+    teeth, while the yaw stage keeps its MXL pulleys and 56-tooth belt."""
+    xl = edited(tmp_path, _tilt_on_xl)
+    box = mounts.pulley(xl, "eyes_tilt", 14, 3).BoundingBox()
+    assert (box.xlen, box.zlen) == (pytest.approx(14 * 5.08 / math.pi - 0.508 + 3), pytest.approx(16))
+    yaw = mounts.pulley(xl, "neck_yaw", 14, 4).BoundingBox()
+    assert (yaw.xlen, yaw.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
+    assert mounts.belts(xl) == [("mxl-belt-56T", "neck_yaw", 56), ("xl-belt-54T", "eyes_tilt", 54)]
+    assert mounts.belts(params) == [("mxl-belt-56T", "neck_yaw", 56), ("mxl-belt-108T", "eyes_tilt", 108)]
+    loop = mounts.belt_loop(xl, "eyes_tilt", 86.05, 24, 14)
+    assert loop.BoundingBox().zlen == pytest.approx(9.525)
+    assert "XL pulley, 24 teeth, pitch dia. 38.81" in mounts.pulley_note(xl, "eyes_tilt", 24, 6, set_screws=True)

@@ -108,7 +108,7 @@ def test_belt_pull_is_the_gearhead_torque_on_the_motor_pulley(params):
     limits = drive_limits.limits(params)
     for joint, key in BELTS.items():
         teeth = data["geometry"]["pulleys"][key]
-        radius = teeth["motor_teeth"] * data["geometry"]["pulleys"]["pitch_mxl"] / (2 * math.pi) / 1000
+        radius = teeth["motor_teeth"] * teeth["pitch"] / (2 * math.pi) / 1000
         shaft_torque = expected_limits(data)[joint][0] * teeth["motor_teeth"] / teeth["joint_teeth"]
         assert limits[joint].belt_pull == pytest.approx(shaft_torque / radius, rel=1e-9), joint
     assert {j for j, lim in limits.items() if lim.belt_pull} == set(BELTS)

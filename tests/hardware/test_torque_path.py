@@ -134,9 +134,8 @@ def _xl_stage(data, belt="xl-belt-037", width=9.525, profile="XL", pitch=5.08, y
     data["purchased"][belt] = {"kind": "belt", "profile": profile, "width": width, "thickness": 2.3,
                                "tooth_height": 1.27, "mass_per_metre": 0.03}
     pulleys = data["geometry"]["pulleys"]
-    pulleys.update(belt=belt, pitch_mxl=pitch)
-    pulleys["yaw"] = {"motor_teeth": yaw[0], "joint_teeth": yaw[1]}
-    pulleys["tilt"] = {"motor_teeth": tilt[0], "joint_teeth": tilt[1]}
+    pulleys["yaw"].update(motor_teeth=yaw[0], joint_teeth=yaw[1], belt=belt, pitch=pitch)
+    pulleys["tilt"].update(motor_teeth=tilt[0], joint_teeth=tilt[1], belt=belt, pitch=pitch)
     data["motor_control"]["joints"]["neck_yaw"]["current_limit"] = yaw_limit
 
 
@@ -159,7 +158,7 @@ def test_the_belt_is_rated_by_its_profile(tmp_path):
 @pytest.mark.parametrize("edit, where", [
     (lambda data: _xl_stage(data, profile="T5"), r"purchased\.xl-belt-037\.profile: unknown belt profile 'T5'"),
     (lambda data: _xl_stage(data, width=6.35), r"purchased\.xl-belt-037\.width: a 6\.35 mm XL belt"),
-    (lambda data: _xl_stage(data, pitch=2.032), r"geometry\.pulleys\.pitch_mxl: 2\.032 mm is not the pitch of the XL"),
+    (lambda data: _xl_stage(data, pitch=2.032), r"geometry\.pulleys\.yaw\.pitch: 2\.032 mm is not the pitch of the XL"),
     (lambda data: data["purchased"]["mxl-belt-6mm"].pop("profile"), r"purchased\.mxl-belt-6mm\.profile: missing"),
 ])
 def test_a_belt_the_check_cannot_rate_is_named(tmp_path, edit, where):
@@ -269,3 +268,16 @@ def test_the_package_reports_the_torque_paths(fab, params):
     assert not data["ok"]
     text = (fab / "reports" / "torque-path.txt").read_text()
     assert "TOO WEAK" in text and "neck_pitch" in text
+
+
+def test_each_belt_stage_is_rated_on_its_own_belt_stock(tmp_path):
+    """The stages name their belts apart (geometry.pulleys.<yaw|tilt>.belt): the tilt stage on XL 037 stock, 14T to
+    24T, passes (margin 2.23 at the 620 mA limit) while the yaw stage keeps its MXL belt and its 0.10."""
+    def tilt_on_xl(data):
+        data["purchased"]["xl-belt-037"] = {"kind": "belt", "profile": "XL", "width": 9.525, "thickness": 2.3,
+                                            "tooth_height": 1.27, "mass_per_metre": 0.03}
+        data["geometry"]["pulleys"]["tilt"].update(joint_teeth=24, belt="xl-belt-037", pitch=5.08)
+    report = torque_path.analyse(edited(tmp_path, tilt_on_xl))
+    belts = {e.joint: e for e in report.elements if e.element == "belt"}
+    assert belts["eyes_tilt"].margin == pytest.approx(2.23, abs=0.005) and belts["eyes_tilt"] not in report.failures()
+    assert belts["neck_yaw"].margin == pytest.approx(0.10, abs=0.005) and belts["neck_yaw"] in report.failures()

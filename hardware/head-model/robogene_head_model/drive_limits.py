@@ -63,8 +63,8 @@ def belt_ratio(params: HeadParameters, joint: str) -> float:
 
 def _motor_pulley_radius(params: HeadParameters, joint: str) -> float:
     """Pitch radius of the motor pulley in metres."""
-    teeth = params.geometry("pulleys", BELTED[joint]).num("motor_teeth", positive=True)
-    return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / (2 * math.pi) / 1000.0
+    stage = params.geometry("pulleys", BELTED[joint])
+    return stage.num("motor_teeth", positive=True) * stage.num("pitch", positive=True) / (2 * math.pi) / 1000.0
 
 
 def torque_constant(params: HeadParameters, motor_key: str) -> float:

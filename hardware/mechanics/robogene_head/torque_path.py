@@ -104,8 +104,8 @@ def _count(item: Node, key: str) -> int:
     return int(value)
 
 
-def _pitch_diameter(params: HeadParameters, teeth: int) -> float:
-    return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / math.pi
+def _pitch_diameter(stage: Node, teeth: int) -> float:
+    return teeth * stage.num("pitch", positive=True) / math.pi
 
 
 def _belt_centre(params: HeadParameters, joint: str) -> float:
@@ -121,23 +121,23 @@ def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
     """IP-24 rates the belt at its small pulley, at the speed of the faster shaft (here the motor pulley's at the
     gearhead's no-load speed, its fastest); the same tension gives torque in proportion to the pulley's diameter at
     the motor pulley (at: gearhead) and the joint pulley (at: joint). The belt's profile and width are the purchased
-    stock's (geometry.pulleys.belt); its pitch must be the one the CAD draws the pulleys with."""
+    stock's that the joint's stage names (geometry.pulleys.<yaw|tilt>.belt); its pitch must be the one the CAD draws
+    the stage's pulleys with (.pitch)."""
     if joint not in drive_limits.BELTED:
         raise item._fail("element", f"{joint} has no belt stage")
-    pulleys = params.geometry("pulleys")
-    key = pulleys.text("belt")
+    node = params.geometry("pulleys", drive_limits.BELTED[joint])
+    key = node.text("belt")
     stock = params.purchased(key)
     profile = stock.text("profile")
     if profile not in torque_elements.BELT_PITCH_MM:
         raise stock._fail("profile", f"unknown belt profile {profile!r} (known: "
                                      f"{', '.join(torque_elements.BELT_PITCH_MM)})")
-    pitch = pulleys.num("pitch_mxl", positive=True)
+    pitch = node.num("pitch", positive=True)
     if abs(pitch - torque_elements.BELT_PITCH_MM[profile]) > 1e-6:
-        raise pulleys._fail("pitch_mxl", f"{pitch:g} mm is not the pitch of the {profile} belt {key} "
-                                         f"({torque_elements.BELT_PITCH_MM[profile]:g} mm)")
-    node = pulleys.node(drive_limits.BELTED[joint])
+        raise node._fail("pitch", f"{pitch:g} mm is not the pitch of the {profile} belt {key} "
+                                  f"({torque_elements.BELT_PITCH_MM[profile]:g} mm)")
     motor, joint_teeth = int(node.num("motor_teeth", positive=True)), int(node.num("joint_teeth", positive=True))
-    d_motor, d_joint = _pitch_diameter(params, motor), _pitch_diameter(params, joint_teeth)
+    d_motor, d_joint = _pitch_diameter(node, motor), _pitch_diameter(node, joint_teeth)
     small, d_small, d_large = min((motor, d_motor, d_joint), (joint_teeth, d_joint, d_motor))
     in_mesh = torque_elements.teeth_in_mesh(small, d_small, d_large, _belt_centre(params, joint))
     drive = params.drive(joint)

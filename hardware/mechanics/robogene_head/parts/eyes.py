@@ -59,7 +59,7 @@ def build(params: HeadParameters) -> list[Part]:
     pan_gear = params.purchased(params.drive("left_eye_pan").text("gearhead"))
     tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
     hw = head.node("floor").num("half_width")
-    pw = params.geometry("pulleys").num("width")
+    pw = mounts.pulley_width(params, "eyes_tilt")
     pulley_gap = mounts.plate_gap(params)
 
     frame = geom.union(
@@ -100,7 +100,7 @@ def build(params: HeadParameters) -> list[Part]:
     parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link", "machined",
                       mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True), at,
                       material="aluminium-6082", color=ALUMINIUM,
-                      note=mounts.pulley_note(params, teeth, bore, joint="eyes_tilt")))
+                      note=mounts.pulley_note(params, "eyes_tilt", teeth, bore, set_screws=True)))
     screw = mounts.joint_set_screw(params)
     parts += [purchased.set_screw(params, f"eyes_tilt_pulley_set_screw_{i}", screw, "eyes_tilt_link", at * frame)
               for i, frame in enumerate(mounts.set_screw_frames(params, "eyes_tilt", bore, outboard=True))]

@@ -100,13 +100,13 @@ def build(params: HeadParameters) -> list[Part]:
     parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"),
                                     yaw_plate, key=YAW_GEARHEAD_SCREW, counterbored=False)
     # The motor pulleys' hubs reach back along the gearhead shafts, through the floor and the mount plate here.
-    width = params.geometry("pulleys").num("width", positive=True)
+    width = mounts.pulley_width(params, "neck_yaw")
     drop = neck.yaw_pulley_drop(params)
     yaw_teeth, yaw_bore = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True)), yaw_gear.num("shaft_diameter")
     parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_bore:g}", "head_frame", "machined",
-                      mounts.pulley(params, yaw_teeth, yaw_bore,
+                      mounts.pulley(params, "neck_yaw", yaw_teeth, yaw_bore,
                                     mounts.hub_length(params, drop - width + yaw_plate)),
-                      loc(ym, 0, -drop), note=mounts.pulley_note(params, yaw_teeth, yaw_bore, hub=True), **al))
+                      loc(ym, 0, -drop), note=mounts.pulley_note(params, "neck_yaw", yaw_teeth, yaw_bore, hub=True), **al))
     # Tilt drive: gearhead flange on the inside of the left side plate, pulley outside with its hub through the
     # plate, motor held by a clamp.
     tilt_motor = params.purchased(params.drive("eyes_tilt").text("motor"))
@@ -115,9 +115,10 @@ def build(params: HeadParameters) -> list[Part]:
     parts += gearhead_screws.screws(params, "eyes_tilt", "head_frame", tilt_flange, tilt_gear.num("diameter"), st)
     tilt_teeth, tilt_bore = int(params.geometry("pulleys", "tilt").num("motor_teeth", positive=True)), tilt_gear.num("shaft_diameter")
     parts.append(Part("eyes_tilt_motor_pulley", f"pulley_mxl_{tilt_teeth}T_bore{tilt_bore:g}", "head_frame", "machined",
-                      mounts.pulley(params, tilt_teeth, tilt_bore, mounts.hub_length(params, hw + gap - inner)),
-                      loc(tmx, hw + gap + width, tmz, rx=90),   # body y hw+gap..hw+gap+width, hub towards -y
-                      note=mounts.pulley_note(params, tilt_teeth, tilt_bore, hub=True), **al))
+                      mounts.pulley(params, "eyes_tilt", tilt_teeth, tilt_bore,
+                                    mounts.hub_length(params, hw + gap - inner)),
+                      loc(tmx, hw + gap + mounts.pulley_width(params, "eyes_tilt"), tmz, rx=90),   # body y hw+gap..hw+gap+width, hub towards -y
+                      note=mounts.pulley_note(params, "eyes_tilt", tilt_teeth, tilt_bore, hub=True), **al))
     clamp, clamp_screws = _tilt_motor_clamp(params, inner, x0 + bt, tmx, tmz,
                                             inner - tilt_gear.num("length") - tilt_motor.num("length") / 2)
     parts.append(clamp)
@@ -143,8 +144,6 @@ def belt_parts(params: HeadParameters) -> list[Part]:
     h = params.geometry("head")
     hw = h.node("floor").num("half_width")
     belts = {joint: (key, teeth) for key, joint, teeth in mounts.belts(params)}
-    stock = params.purchased(params.geometry("pulleys").text("belt"))
-    pitch = params.geometry("pulleys").num("pitch_mxl")
     yaw, tilt = params.geometry("pulleys", "yaw"), params.geometry("pulleys", "tilt")
     ym = h.num("yaw_motor_x")
     tx, _, tz = params.joints["eyes_tilt"].origin
@@ -157,9 +156,10 @@ def belt_parts(params: HeadParameters) -> list[Part]:
     out = []
     for joint, distance, teeth, placement in loops:
         key, belt_teeth = belts[joint]
-        shape = mounts.belt_loop(params, distance, int(teeth.num("joint_teeth")), int(teeth.num("motor_teeth")))
+        shape = mounts.belt_loop(params, joint, distance, int(teeth.num("joint_teeth")), int(teeth.num("motor_teeth")))
+        stock = params.purchased(mounts.belt_key(params, joint))
         out.append(Part(f"{joint}_belt", key, "head_frame", "purchased", shape, placement,
-                        mass=belt_teeth * pitch / 1000 * stock.num("mass_per_metre"), color=DARK,
+                        mass=belt_teeth * mounts.belt_pitch(params, joint) / 1000 * stock.num("mass_per_metre"), color=DARK,
                         note="belt back around the pulleys; its teeth sit in the pulley envelopes"))
     return out
 

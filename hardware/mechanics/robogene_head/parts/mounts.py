@@ -88,8 +88,31 @@ def mount_note(params: HeadParameters, joint: str) -> str:
     return f"{clearance:g} holes: M3 fixing screws. " + gearhead_screws.note(params)
 
 
+def stage(params: HeadParameters, joint: str) -> Node:
+    """geometry.pulleys.<yaw|tilt>: the belt stage of a belted joint (its teeth, belt stock, pitch and width)."""
+    from robogene_head_model.drive_limits import BELTED
+    if joint not in BELTED:
+        raise ParameterError(f"{params.path}: {joint} has no belt stage (belted: {', '.join(BELTED)})")
+    return params.geometry("pulleys", BELTED[joint])
+
+
+def belt_key(params: HeadParameters, joint: str) -> str:
+    """The purchased belt stock the joint's stage runs, cut to its tooth count."""
+    return stage(params, joint).text("belt")
+
+
+def belt_pitch(params: HeadParameters, joint: str) -> float:
+    """The pitch the joint's pulleys are drawn at (the belt profile's; torque_path checks the two agree)."""
+    return stage(params, joint).num("pitch", positive=True)
+
+
+def pulley_width(params: HeadParameters, joint: str) -> float:
+    """The joint's pulleys' width over their flanges."""
+    return stage(params, joint).num("width", positive=True)
+
+
 def pitch_differential(params: HeadParameters) -> float:
-    """MXL: pitch diameter less the teeth's outside diameter."""
+    """MXL and XL alike: pitch diameter less the teeth's outside diameter."""
     return params.geometry("pulleys").num("pitch_differential", positive=True)
 
 
@@ -102,15 +125,16 @@ def plate_gap(params: HeadParameters) -> float:
     return params.geometry("pulleys").num("plate_gap", positive=True)
 
 
-def pitch_diameter(params: HeadParameters, teeth: int) -> float:
-    return teeth * params.geometry("pulleys").num("pitch_mxl", positive=True) / math.pi
+def pitch_diameter(params: HeadParameters, joint: str, teeth: int) -> float:
+    return teeth * belt_pitch(params, joint) / math.pi
 
 
-def pulley(params: HeadParameters, teeth: int, bore: float, hub_length: float = 0.0) -> cq.Shape:
-    """MXL pulley envelope, z 0..width: toothed body at its outside diameter between two flanges. A motor pulley
-    has a hub hub_length long from z = width, around the bore, so that it sits on most of its gearhead's shaft."""
-    width = params.geometry("pulleys").num("width", positive=True)
-    outside = pitch_diameter(params, teeth) - pitch_differential(params)
+def pulley(params: HeadParameters, joint: str, teeth: int, bore: float, hub_length: float = 0.0) -> cq.Shape:
+    """Pulley envelope of the joint's stage, z 0..width: toothed body at its outside diameter between two flanges.
+    A motor pulley has a hub hub_length long from z = width, around the bore, so that it sits on most of its
+    gearhead's shaft."""
+    width = pulley_width(params, joint)
+    outside = pitch_diameter(params, joint, teeth) - pitch_differential(params)
     flange, f = outside + 2 * params.geometry("pulleys", "flange").num("rim", positive=True), flange_thickness(params)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
@@ -155,9 +179,9 @@ def set_screw_angles(params: HeadParameters, joint: str) -> list[float]:
     return list(node.vec(BELTED[joint], len(value)))
 
 
-def joint_hub_span(params: HeadParameters, outboard: bool) -> tuple[float, float]:
+def joint_hub_span(params: HeadParameters, joint: str, outboard: bool) -> tuple[float, float]:
     """z range of a joint pulley's hub in the pulley's frame (body z 0..width): below it or beyond it."""
-    width, length = params.geometry("pulleys").num("width", positive=True), joint_hub_length(params)
+    width, length = pulley_width(params, joint), joint_hub_length(params)
     return (width, width + length) if outboard else (-length, 0.0)
 
 
@@ -174,7 +198,7 @@ def flat_depth(params: HeadParameters, bore: float) -> float:
 def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Location]:
     """Each set screw's frame in its pulley's frame: +z radially in, its end on the shaft's flat under it (so
     its socket end sits the flat's depth below the hub's surface)."""
-    z0, z1 = joint_hub_span(params, outboard)
+    z0, z1 = joint_hub_span(params, joint, outboard)
     length = params.purchased(joint_set_screw(params)).num("length", positive=True)
     r = bore / 2 - flat_depth(params, bore) + length
     frames = []
@@ -187,7 +211,7 @@ def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: 
 
 def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Shape]:
     """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub."""
-    z0, z1 = joint_hub_span(params, outboard)
+    z0, z1 = joint_hub_span(params, joint, outboard)
     inner = bore / 2 - flat_depth(params, bore)
     return [geom.box(inner, bore, -bore, bore, z0, z1).moved(cq.Location(cq.Vector(), cq.Vector(0, 0, 1), angle))
             for angle in set_screw_angles(params, joint)]
@@ -197,8 +221,8 @@ def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, ou
     """A joint pulley: the pulley envelope with a hub (joint_hub_span) carrying tapped radial holes for its set
     screws, drawn at the thread's size like every tapped hole of the head."""
     hub = joint_hub(params)
-    z0, z1 = joint_hub_span(params, outboard)
-    body = geom.union(pulley(params, teeth, bore), geom.cyl("z", bore + 2 * hub.num("wall", positive=True), z0, z1))
+    z0, z1 = joint_hub_span(params, joint, outboard)
+    body = geom.union(pulley(params, joint, teeth, bore), geom.cyl("z", bore + 2 * hub.num("wall", positive=True), z0, z1))
     thread = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
     holes = [geom.cyl("z", bore, z0 - 1, z1 + 1)]
     # each tapped hole opens on a flat land LAND_DEPTH below the hub's round surface (as on the drive hubs): in the
@@ -231,12 +255,13 @@ def hub_length(params: HeadParameters, from_pulley_to_flange: float) -> float:
     return from_pulley_to_flange - gap
 
 
-def belt_teeth(params: HeadParameters, centre_distance: float, teeth_a: int, teeth_b: int) -> int:
-    """Closed MXL belt for two pulleys: pitch length 2C + pi(D+d)/2 + (D-d)^2/4C, rounded up to whole teeth
+def belt_teeth(params: HeadParameters, joint: str, centre_distance: float, teeth_a: int, teeth_b: int) -> int:
+    """Closed belt for the joint's two pulleys: pitch length 2C + pi(D+d)/2 + (D-d)^2/4C, rounded up to whole teeth
     (the motor is slotted to take up the difference)."""
-    big, small = pitch_diameter(params, max(teeth_a, teeth_b)), pitch_diameter(params, min(teeth_a, teeth_b))
+    big, small = (pitch_diameter(params, joint, max(teeth_a, teeth_b)),
+                  pitch_diameter(params, joint, min(teeth_a, teeth_b)))
     length = 2 * centre_distance + math.pi * (big + small) / 2 + (big - small) ** 2 / (4 * centre_distance)
-    return math.ceil(length / params.geometry("pulleys").num("pitch_mxl") - 1e-9)
+    return math.ceil(length / belt_pitch(params, joint) - 1e-9)
 
 
 def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
@@ -244,24 +269,24 @@ def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
     head = params.geometry("head")
     tilt = params.joints["eyes_tilt"].origin
     tm = head.node("tilt_motor")
-    pulleys = params.geometry("pulleys")
     out = []
-    for joint, distance, node in (
-            ("neck_yaw", abs(head.num("yaw_motor_x")), pulleys.node("yaw")),
-            ("eyes_tilt", math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z")), pulleys.node("tilt"))):
-        teeth = belt_teeth(params, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
-        out.append((f"mxl-belt-{teeth}T", joint, teeth))
+    for joint, distance in (("neck_yaw", abs(head.num("yaw_motor_x"))),
+                            ("eyes_tilt", math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z")))):
+        node = stage(params, joint)
+        teeth = belt_teeth(params, joint, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
+        profile = params.purchased(belt_key(params, joint)).text("profile")
+        out.append((f"{profile.lower()}-belt-{teeth}T", joint, teeth))
     return out
 
 
-def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teeth_b: int) -> cq.Shape:
+def belt_loop(params: HeadParameters, joint: str, centre_distance: float, teeth_a: int, teeth_b: int) -> cq.Shape:
     """Envelope of a closed belt around two pulleys, in pulley a's frame with pulley b at (centre_distance, 0): the
     belt's back (thickness less tooth height) wrapped on both pulleys' outside diameters and along the tangent
     spans between them, centred across the pulleys' width (z). The teeth sit in the grooves, inside the pulley
-    envelopes, so they are left out. The section comes from the purchased belt stock named by pulleys.belt."""
-    key = params.geometry("pulleys").text("belt")
+    envelopes, so they are left out. The section comes from the purchased belt stock the joint's stage names."""
+    key = belt_key(params, joint)
     belt = params.purchased(key)
-    width = params.geometry("pulleys").num("width", positive=True)
+    width = pulley_width(params, joint)
     belt_width = belt.num("width", positive=True)
     back = belt.num("thickness", positive=True) - belt.num("tooth_height", positive=True)
     if back <= 0:
@@ -270,8 +295,8 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     if belt_width > between:
         raise ParameterError(f"{params.path}: purchased.{key}: a {belt_width:g} mm wide belt does not run between "
                              f"the flanges of {width:g} mm pulleys ({between:g} mm apart)")
-    ra = (pitch_diameter(params, teeth_a) - pitch_differential(params)) / 2
-    rb = (pitch_diameter(params, teeth_b) - pitch_differential(params)) / 2
+    ra = (pitch_diameter(params, joint, teeth_a) - pitch_differential(params)) / 2
+    rb = (pitch_diameter(params, joint, teeth_b) - pitch_differential(params)) / 2
     z0, z1 = (width - belt_width) / 2, (width + belt_width) / 2
 
     def hull(extra: float, lo: float, hi: float) -> cq.Shape:
@@ -286,13 +311,15 @@ def belt_loop(params: HeadParameters, centre_distance: float, teeth_a: int, teet
     return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
-def pulley_note(params: HeadParameters, teeth: int, bore: float, hub: bool = False, joint: str = "") -> str:
+def pulley_note(params: HeadParameters, joint: str, teeth: int, bore: float, hub: bool = False,
+                set_screws: bool = False) -> str:
     """What the drawing of a pulley must say: its teeth are not modelled; a motor pulley's hub, too thin for a set
     screw, is bonded to the shaft; a joint pulley's hub takes set screws (kept short: one line on the sheet)."""
     fixing = ", hub bonded to the shaft" if hub else ""
-    if joint:
+    profile = params.purchased(belt_key(params, joint)).text("profile")
+    if set_screws:
         screw = params.purchased(joint_set_screw(params))
         fixing = (f", hub {len(set_screw_angles(params, joint))} x M{screw.num('diameter'):g} tapped radial for "
                   f"{joint_set_screw(params)} set screws")
-    return (f"MXL pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, teeth):.2f}, bore {bore:g} H7{fixing}; "
-            f"teeth not drawn: MXL profile")
+    return (f"{profile} pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, joint, teeth):.2f}, bore {bore:g} "
+            f"H7{fixing}; teeth not drawn: {profile} profile")

@@ -314,7 +314,7 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
         *hub_screws(params, hub, "neck_roll_link"),
         Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}_hub", "neck_roll_link", "machined",
              mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
-             color=ALUMINIUM, note=mounts.pulley_note(params, teeth, shaft, joint="neck_yaw")),
+             color=ALUMINIUM, note=mounts.pulley_note(params, "neck_yaw", teeth, shaft, set_screws=True)),
     ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
          for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))] \
         + yaw_bearings.shaft_parts(params, zy)
@@ -341,7 +341,7 @@ def hub_screws(params: HeadParameters, hub: drive_hubs.Hub, link: str) -> list[P
 def yaw_pulley_drop(params: HeadParameters) -> float:
     """Depth of the yaw pulleys' lower face below the yaw joint frame: pulleys.plate_gap under the head floor."""
     return (params.geometry("head", "floor").num("thickness") + mounts.plate_gap(params)
-            + params.geometry("pulleys").num("width", positive=True))
+            + mounts.pulley_width(params, "neck_yaw"))
 
 
 def build(params: HeadParameters) -> list[Part]:
