@@ -164,8 +164,9 @@ int main(void) {
   for (size_t b = 0; b < ROBOGENE_BOARD_COUNT; ++b) {
     for (int a = 0; a < 2; ++a) {
       const robogene_axis_config_t *x = &robogene_board_configs[b].axes[a];
-      printf("%s %d %ld %ld %d %ld %lu\\n", x->joint, x->homing_direction, (long)x->homing_stop, (long)x->homing_speed,
-             x->homing_pwm, (long)x->homing_backoff, (unsigned long)x->homing_timeout_ms);
+      printf("%s %d %ld %ld %d %ld %lu %ld\\n", x->joint, x->homing_direction, (long)x->homing_stop,
+             (long)x->homing_speed, x->homing_pwm, (long)x->homing_backoff, (unsigned long)x->homing_timeout_ms,
+             (long)x->homing_current_limit);
     }
   }
   return 0;
@@ -181,13 +182,23 @@ int main(void) {
     for i, joint in enumerate(g["axis_names"]):
         cpd = g["encoder"][i]
         assert rows[joint] == [h["direction"][i], round(h["stop"][i] * cpd), round(h["speed"][i] * cpd), h["pwm"][i],
-                               round(h["backoff"][i] * cpd), round(h["timeout"][i] * 1000)], joint
+                               round(h["backoff"][i] * cpd), round(h["timeout"][i] * 1000), h["current"][i]], joint
     assert rows["eyes_version"][0] == 1 and rows["neck_pitch"][0] == 0
+
+
+def test_the_homing_current_comes_from_the_parameter_file(ini, params):
+    """The eyes press their stops with the homing run's own current limit, not the joints' run limit."""
+    g, h, lim = ini["GENERAL"], ini["HOMING"], ini["LIMITS"]
+    homing = params["motor_control"]["homing"]
+    expected = [homing[j]["current_limit"] if j in homing else 0 for j in g["axis_names"]]
+    assert h["current"] == expected
+    version = g["axis_names"].index("eyes_version")
+    assert 0 < h["current"][version] < lim["current"][version]
 
 
 LEFT_STOPS = "left_eye_pan:  {method: hard_stop, direction: 1, stops_deg: [-56.5, 56.5], back_off_deg: 28.5}"
 RIGHT_STOPS = "right_eye_pan: {method: hard_stop, direction: 1, stops_deg: [-56.5, 56.5], back_off_deg: 28.5}"
-TUNING = "eyes_version:  {speed: 10, pwm: 250, timeout: 20}"
+TUNING = "eyes_version:  {speed: 10, pwm: 250, timeout: 20, current_limit: 100}"
 
 
 def test_homing_stops_come_from_the_physical_joints(tree):
@@ -198,8 +209,8 @@ def test_homing_stops_come_from_the_physical_joints(tree):
     joints = {j.joint: j for j in _compile(tree).board_configs[0].joints}
     version, vergence = joints["eyes_version"].homing, joints["eyes_vergence"].homing
     assert (version.direction, version.stop_deg, version.backoff_deg) == (1, 57.5, 29)
-    assert (version.speed, version.pwm, version.timeout_s) == (10, 250, 20)
-    assert (vergence.direction, vergence.stop_deg) == (0, 1)
+    assert (version.speed, version.pwm, version.timeout_s, version.current_limit) == (10, 250, 20, 100)
+    assert (vergence.direction, vergence.stop_deg, vergence.current_limit) == (0, 1, 0)
     assert joints["neck_pitch"].homing is None
 
 
@@ -231,11 +242,39 @@ def test_homing_pwm_above_the_output_limit(tree):
                     "1..output_limit (900)"]
 
 
+def test_homing_current_above_the_run_limit(tree):
+    errs, text = _errors(tree, "current_limit: 100}", "current_limit: 700}")
+    assert errs == [f"{_at(text, 'current_limit: 700', skip=15)}: error: motor_control.homing.eyes_version.current_limit: "
+                    "700 mA is outside 1..the run limit of eyes_version and eyes_vergence's motors (600 mA)"]
+
+
+def test_homing_current_above_the_lower_run_limit_of_the_eye_board(tree):
+    """Both eye motors run at the lower of version's and vergence's limits: the homing current must fit under it."""
+    errs, text = _errors(tree, "eyes_vergence: {kp: 260, ki: 1, kd: 2600, shift: 8, offset: 0, output_limit: 900, "
+                               "integral_limit: 300, max_velocity: 400, current_limit: 600}",
+                         "eyes_vergence: {kp: 260, ki: 1, kd: 2600, shift: 8, offset: 0, output_limit: 900, "
+                         "integral_limit: 300, max_velocity: 400, current_limit: 90}")
+    assert f"{_at(text, 'current_limit: 100}', skip=15)}: error: motor_control.homing.eyes_version.current_limit: " \
+           "100 mA is outside 1..the run limit of eyes_version and eyes_vergence's motors (90 mA)" in errs, errs
+
+
+@pytest.mark.parametrize("new, message", [
+    ("timeout: 20}", "motor_control.homing.eyes_version.current_limit: missing"),
+    ("timeout: 20, current_limit: 0}", "motor_control.homing.eyes_version.current_limit: 0 mA is outside 1..the run "
+                                       "limit of eyes_version and eyes_vergence's motors (600 mA)"),
+    ("timeout: 20, current_limit: 0.1}", "motor_control.homing.eyes_version.current_limit: expected an integer "
+                                         "(mA per motor), got 0.1"),
+])
+def test_a_bad_homing_current_is_named(tree, new, message):
+    errs, _ = _errors(tree, "timeout: 20, current_limit: 100}", new)
+    assert any(e.endswith(message) for e in errs), errs
+
+
 def test_the_firmware_tuning_gives_no_stop_of_its_own(tree):
     """The stop angle has one source: a stop under motor_control.homing is refused, naming where it belongs."""
     errs, text = _errors(tree, TUNING, TUNING.replace("{speed", "{stop: 55, speed"))
     assert errs == [f"{_at(text, 'stop: 55', skip=6)}: error: motor_control.homing.eyes_version.stop: unknown key (allowed: "
-                    "speed, pwm, timeout; the stops, the side and the back-off come from the top-level "
+                    "speed, pwm, timeout, current_limit; the stops, the side and the back-off come from the top-level "
                     "homing.<joint> of its motors)"]
 
 
@@ -248,8 +287,8 @@ def test_vergence_cannot_home_on_its_own(tree):
 def test_a_hard_stop_joint_needs_the_boards_tuning(tree):
     errs, text = _errors(tree, "  homing:\n    " + TUNING + "\n", "")
     assert f"{_at(text, LEFT_STOPS, skip=len('left_eye_pan:  {method: '))}: error: homing.left_eye_pan.method: " \
-           "left_eye_pan homes against a hard stop, but motor_control.homing.eyes_version gives no speed, pwm and " \
-           "timeout for the board's homing run" in errs, errs
+           "left_eye_pan homes against a hard stop, but motor_control.homing.eyes_version gives no speed, pwm, " \
+           "timeout and current_limit for the board's homing run" in errs, errs
 
 
 def test_an_absolute_encoder_joint_needs_its_encoder(tree):

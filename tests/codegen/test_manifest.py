@@ -131,6 +131,27 @@ def test_check_fails_on_a_missing_file(tree, capsys):
     assert code == 1 and "stale: hardware/electronics/firmware/generated/robogene_head_board_config.h: missing" in err
 
 
+def test_a_changed_homing_current_makes_both_board_configs_stale_and_generate_writes_it(tree, capsys):
+    """motor_control.homing.<joint>.current_limit reaches the driver's [HOMING] and the firmware's table; a changed
+    value makes both stale, and generate writes it, byte for byte the same on a second run."""
+    params = tree / "hardware/head-parameters.yaml"
+    text = params.read_text()
+    assert text.count("timeout: 20, current_limit: 100}") == 1
+    params.write_text(text.replace("timeout: 20, current_limit: 100}", "timeout: 20, current_limit: 150}"))
+    code, err = check(tree, capsys)
+    assert code == 1
+    ini, table = "drivers/can/generated/head.ini", "hardware/electronics/firmware/generated/robogene_head_board_config.h"
+    for rel in (ini, table):
+        assert f"stale: {rel}: differs from what its generator writes" in err, err
+    assert main(["generate", "--root", str(tree), "--only", "idl"]) == 0
+    first = {rel: (tree / rel).read_bytes() for rel in (ini, table)}
+    assert re.search(rb"\ncurrent 0 0 0 0 150 0\n", first[ini])
+    assert b"20000u, 150," in first[table]
+    assert main(["generate", "--root", str(tree), "--only", "idl"]) == 0
+    assert {rel: (tree / rel).read_bytes() for rel in (ini, table)} == first
+    assert check(tree, capsys)[0] == 0
+
+
 def test_check_fails_on_an_extra_file_in_a_generated_folder_and_generate_removes_it(tree, capsys):
     # The firmware's headers were in a folder the old sweep did not cover: a renamed board config left its
     # old header behind, unnoticed.

@@ -16,6 +16,7 @@ from param_variants import edited
 PEAK = {"left_eye_pan": 0.001, "right_eye_pan": 0.001}      # N m, about what drive sizing gives the pans
 PER_RAD = (500 ** 2 + 34 ** 2) / 68                         # mm of depth per radian of vergence at 0.5 m, 68 mm apart
 KT = 12 / (12800 * 2 * math.pi / 60)                        # the 1717T012SR: 12 V over its no-load speed
+HOMING_A = 0.1                  # motor_control.homing.eyes_version.current_limit: the eyes press their stops at 100 mA
 
 
 def _terms(e):
@@ -62,7 +63,7 @@ def test_todays_spur_gearheads_miss_the_budget(params):
     assert t["transmission"].deg is None and t["transmission"].repeatable
     assert e.unknown == ["hysteresis", "wind_up", "home_spread"]
     assert e.per_eye_deg is None and not e.ok
-    home = KT * 0.6 * 43 * 0.7                              # current limit x kt x ratio x efficiency
+    home = KT * HOMING_A * 43 * 0.7                         # homing current limit x kt x ratio x efficiency
     lug = math.degrees(home * eye_error_terms.stop_compliance(params))
     assert t["stop_offset"].deg == pytest.approx(lug) and t["stop_offset"].repeatable
     assert t["stop_spread"].deg == pytest.approx(0.2 * lug + t["quantisation"].deg)
@@ -90,32 +91,74 @@ def test_a_strain_wave_gear_is_counted_term_by_term(tmp_path):
     assert t["transmission"].deg == pytest.approx(3 / 60) and t["transmission"].repeatable
     assert t["hysteresis"].deg == pytest.approx(1 / 60)
     assert t["wind_up"].deg == pytest.approx(math.degrees(0.001 / 110))
-    home = KT * 0.6 * 50 * 0.7
-    assert t["home_wind_up"].deg == pytest.approx(math.degrees(0.075 / 110 + (home - 0.075) / 140))
+    home = KT * HOMING_A * 50 * 0.7                         # below T1: on K1 alone
+    assert home < 0.075
+    assert t["home_wind_up"].deg == pytest.approx(math.degrees(home / 110))
     assert t["home_spread"].deg == pytest.approx(0.2 * t["home_wind_up"].deg)
     counted = sum(x.deg for x in e.terms if not x.repeatable)
     assert e.per_eye_deg == pytest.approx(counted)
     assert e.uncalibrated_deg == pytest.approx(sum(x.deg for x in e.terms))
-    # pushed onto the printed lug with the full current limit, the stall's spread alone spends the budget
+
+
+def _homing_current(d, ma):
+    d["motor_control"]["homing"]["eyes_version"]["current_limit"] = ma
+
+
+def _budget_terms(tmp_path, name, edit):
+    (tmp_path / name).mkdir()
+    return _terms(eye_accuracy.budget(edited(tmp_path / name, edit), PEAK))
+
+
+def test_the_stop_terms_follow_the_homing_current_not_the_run_limit(tmp_path):
+    """The stall torque at the stop is the homing run's current limit through the gear: the lug's bending scales
+    with it, while the joints' run limit (what the drive sizing counts on) does not enter."""
+    base = _budget_terms(tmp_path, "base", _strain_wave)
+    tripled = _budget_terms(tmp_path, "300", lambda d: (_strain_wave(d), _homing_current(d, 300)))
+    assert tripled["stop_offset"].deg == pytest.approx(3 * base["stop_offset"].deg)
+    assert "(300 mA)" in tripled["stop_offset"].what and "(100 mA)" in base["stop_offset"].what
+
+    def run_limit(d):
+        _strain_wave(d)
+        for j in ("eyes_version", "eyes_vergence"):
+            d["motor_control"]["joints"][j]["current_limit"] = 900
+    raised = _budget_terms(tmp_path, "run", run_limit)
+    for name in ("stop_offset", "stop_spread", "home_wind_up", "home_spread"):
+        assert raised[name].deg == pytest.approx(base[name].deg), name
+
+
+def test_a_homing_current_above_the_run_limit_counts_as_the_run_limit(tmp_path):
+    """As the firmware does (the lower of the two holds the motors), so does the budget."""
+    at_run = _budget_terms(tmp_path, "600", lambda d: (_strain_wave(d), _homing_current(d, 600)))
+    above = _budget_terms(tmp_path, "5000", lambda d: (_strain_wave(d), _homing_current(d, 5000)))
+    assert above["stop_offset"].deg == pytest.approx(at_run["stop_offset"].deg)
+    assert above["home_wind_up"].deg == pytest.approx(at_run["home_wind_up"].deg)
+
+
+def test_homing_at_the_run_limit_spends_the_budget(tmp_path):
+    """The broken variant: the same gear pressed onto the printed lug with the run limit (600 mA), as before the
+    homing run had a limit of its own: the stall's spread alone is more than the budget, and the check refuses it."""
+    e = eye_accuracy.budget(edited(tmp_path, lambda d: (_strain_wave(d, hysteresis=0.5), _homing_current(d, 600))),
+                            PEAK)
+    t = _terms(e)
+    home = KT * 0.6 * 50 * 0.7
+    assert t["home_wind_up"].deg == pytest.approx(math.degrees(0.075 / 110 + (home - 0.075) / 140))
     assert t["stop_spread"].deg + t["home_spread"].deg > e.per_eye_allowed_deg and not e.ok
+    with pytest.raises(eye_accuracy.EyeAccuracyError, match="does NOT meet it"):
+        eye_accuracy.enforce(e)
 
 
 def test_homing_gently_with_a_zero_backlash_gear_meets_it(tmp_path):
-    """The same gear homed at 100 mA (the board's current limit on the eye joints) leaves the stop's spread small
+    """The same gear homed with the parameter file's homing current (100 mA) leaves the stop's spread small
     enough: the check passes, and the report says so."""
-    def edit(d):
-        _strain_wave(d, hysteresis=0.5)
-        for j in ("eyes_version", "eyes_vergence"):
-            d["motor_control"]["joints"][j]["current_limit"] = 100
-    e = eye_accuracy.budget(edited(tmp_path, edit), PEAK)
+    e = eye_accuracy.budget(edited(tmp_path, lambda d: _strain_wave(d, hysteresis=0.5)), PEAK)
     assert e.ok and e.depth_mm < 5
     eye_accuracy.enforce(e)
     assert "the drive meets it" in eye_accuracy.format_report(e)
 
 
 def test_a_torque_beyond_T1_needs_K2(tmp_path):
-    params = edited(tmp_path, lambda d: (_strain_wave(d), d["purchased"]["faulhaber-16-7-43"]["torsional_stiffness"]
-                                         .pop("K2")))
+    params = edited(tmp_path, lambda d: (_strain_wave(d), _homing_current(d, 600),
+                                         d["purchased"]["faulhaber-16-7-43"]["torsional_stiffness"].pop("K2")))
     with pytest.raises(ParameterError, match=r"purchased\.faulhaber-16-7-43\.torsional_stiffness\.K2: missing: "
                                              r"0\.188 N m is beyond T1 = 0\.075 N m"):
         eye_accuracy.budget(params, PEAK)
@@ -146,6 +189,10 @@ def test_the_package_reports_every_term(params, fab):
      r"purchased\.faulhaber-16-7-43\.torsional_stiffness: expected a mapping"),
     (lambda d: d["purchased"]["faulhaber-16-7-43"].update(hysteresis_loss_arcmin="1'"),
      r"purchased\.faulhaber-16-7-43\.hysteresis_loss_arcmin: expected a number"),
+    (lambda d: d["motor_control"]["homing"]["eyes_version"].pop("current_limit"),
+     r"motor_control\.homing\.eyes_version\.current_limit: missing"),
+    (lambda d: _homing_current(d, 0), r"motor_control\.homing\.eyes_version\.current_limit: must be > 0"),
+    (lambda d: d["motor_control"].pop("homing"), r"motor_control\.homing: missing"),
 ])
 def test_bad_budget_input_is_named(tmp_path, edit, message):
     with pytest.raises(ParameterError, match=message):

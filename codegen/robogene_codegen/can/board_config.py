@@ -33,7 +33,7 @@ PID_FIELDS = {"kp": ("set_position_pid", "kp"), "ki": ("set_position_pid", "ki")
               "integral_limit": ("set_position_pid_limits", "integral_limit")}
 JOINT_KEYS = tuple(PID_FIELDS) + ("max_velocity", "current_limit")
 # motor_control.homing.<control joint>: only the firmware's tuning of its homing run.
-HOMING_KEYS = ("speed", "pwm", "timeout")
+HOMING_KEYS = ("speed", "pwm", "timeout", "current_limit")
 # homing.<physical joint> (top level): how the joint finds its zero, the one source of its hard stops.
 STOP_KEYS = ("method", "direction", "stops_deg", "back_off_deg")
 HOMING_METHODS = ("absolute_encoder", "hard_stop")
@@ -51,6 +51,7 @@ class Homing:
     pwm: int = 0                # PWM steps
     backoff_deg: float = 0.0
     timeout_s: float = 0.0
+    current_limit: int = 0      # mA per motor while seeking the stop: the torque it is pressed with
 
 
 @dataclass
@@ -78,7 +79,8 @@ class AxisConfig:
         h = self.homing or Homing(0, 0.0)
         return {"direction": h.direction, "stop": round(h.stop_deg * self.counts_per_degree),
                 "speed": round(h.speed * self.counts_per_degree), "pwm": h.pwm,
-                "backoff": round(h.backoff_deg * self.counts_per_degree), "timeout_ms": round(h.timeout_s * 1000)}
+                "backoff": round(h.backoff_deg * self.counts_per_degree), "timeout_ms": round(h.timeout_s * 1000),
+                "current_limit": h.current_limit}
 
     @property
     def min_counts(self) -> int:
@@ -422,8 +424,8 @@ class _Reader:
             if not runs:
                 drivers = [a.joint for a in axes.values() if motor in a.motors and a.joint != "eyes_vergence"]
                 self.fail(("homing", motor, "method"), f"{motor} homes against a hard stop, but "
-                          f"motor_control.homing.{drivers[0] if drivers else motor} gives no speed, pwm and timeout "
-                          "for the board's homing run")
+                          f"motor_control.homing.{drivers[0] if drivers else motor} gives no speed, pwm, timeout "
+                          "and current_limit for the board's homing run")
         for name in tuning:
             path = mc + ("homing", name)
             if name not in axes:
@@ -465,6 +467,7 @@ class _Reader:
             timeout = float(self.get(path + ("timeout",), float, "a number (s)"))
             if timeout <= 0:
                 self.fail(path + ("timeout",), f"must be > 0, got {timeout:g}")
+            current = self._homing_current(path, a, [axes[j] for j in axes if set(axes[j].motors) & set(a.motors)])
             beyond = stop >= a.max_deg if direction == 1 else stop <= a.min_deg
             if not beyond:
                 side = "upper" if direction == 1 else "lower"
@@ -474,7 +477,18 @@ class _Reader:
             if not a.min_deg <= rest <= a.max_deg:
                 self.fail(("homing", first, "back_off_deg"), f"backing {name} off {back:g} deg from the stops at "
                           f"{stop:g} deg ends at {rest:g} deg, outside its range {a.min_deg:g}..{a.max_deg:g}")
-            a.homing = Homing(direction, stop, speed, pwm, back, timeout)
+            a.homing = Homing(direction, stop, speed, pwm, back, timeout, current)
+
+    def _homing_current(self, path: tuple, a: AxisConfig, sharing: list[AxisConfig]) -> int:
+        """motor_control.homing.<joint>.current_limit: mA per motor while the joint seeks its stops, within what its
+        motors may draw at all (on the eye board both motors serve version and vergence: the lower of their limits)."""
+        current = self.get(path + ("current_limit",), int, "an integer (mA per motor)")
+        run = min(x.current_limit for x in sharing)
+        if not 0 < current <= run:
+            names = " and ".join(x.joint for x in sharing)
+            self.fail(path + ("current_limit",), f"{current} mA is outside 1..the run limit of {names}'s motors "
+                      f"({run} mA)")
+        return current
 
     def _coupled_homing(self, mc: tuple, boards: list[Board]) -> None:
         """On the eye board version homes both eyes against their stops, which fixes vergence too: the vergence read

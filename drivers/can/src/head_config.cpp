@@ -211,11 +211,16 @@ HeadConfig read_head_config(const Searchable& config) {
     const auto pwm = h.ints("pwm", count, 0, 32767);
     const auto backoff = h.numbers("backoff", count, 0, 720);
     const auto timeout = h.numbers("timeout", count, 0, 3600);
+    const auto homing_current = h.ints("current", count, 0, 100000);
     for (std::size_t j = 0; j < count; ++j) {
-      homing[j] = HomingConfig{direction[j], stop[j], speed[j], pwm[j], backoff[j], timeout[j]};
+      homing[j] = HomingConfig{direction[j], stop[j], speed[j], pwm[j], backoff[j], timeout[j], homing_current[j]};
       if (direction[j] != 0 && (speed[j] <= 0 || pwm[j] <= 0 || timeout[j] <= 0)) {
         h.fail("speed", "joint " + axis_names[j] + " homes (direction " + std::to_string(direction[j]) +
                             ") but its speed, pwm or timeout is 0");
+      }
+      if (direction[j] != 0 && (homing_current[j] <= 0 || homing_current[j] > current[j])) {
+        h.fail("current", "joint " + axis_names[j] + " homes with " + std::to_string(homing_current[j]) +
+                              " mA, outside 1..its current limit (" + Group::text(current[j]) + " mA, [LIMITS] current)");
       }
     }
   }

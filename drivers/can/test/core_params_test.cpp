@@ -32,6 +32,7 @@ void expect_same_axis(const rg_axis_params_t& sim, const rg_axis_params_t& fw, c
   EXPECT_EQ(sim.homing.stop_position, fw.homing.stop_position) << what;
   EXPECT_EQ(sim.homing.backoff, fw.homing.backoff) << what;
   EXPECT_EQ(sim.homing.timeout_ms, fw.homing.timeout_ms) << what;
+  EXPECT_EQ(sim.homing.current_limit_ma, fw.homing.current_limit_ma) << what;
 }
 
 TEST(CoreParams, TheSimulatorRunsEachBoardWithItsFirmwareImagesNumbers) {

@@ -43,6 +43,10 @@ TEST(HeadConfig, TheGeneratedHeadIniDescribesSixJointsOnThreeBoards) {
   EXPECT_EQ(eyes->coupling->joints[0], 4);
   EXPECT_EQ(eyes->joints[1], 5);
   EXPECT_FALSE(head.board(head.joints[0].board)->coupling);
+  // The eyes press their stops with the homing run's own current, below the run limit.
+  EXPECT_EQ(head.joints[4].homing.current, 100);
+  EXPECT_LT(head.joints[4].homing.current, head.joints[4].current_limit);
+  EXPECT_EQ(head.joints[0].homing.current, 0);
 }
 
 TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
@@ -61,6 +65,11 @@ TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
            Case{"m2j", "m2j (0.5 0.5) (1 1)", "[COUPLING_3] key 'm2j': is not the inverse of j2m"},
            Case{"board_addresses", "board_addresses 1 2 2", "address 2 is used by two boards"},
            Case{"kp ", "kp 170 170 66 35 130 99999", "[PIDS] key 'kp': value 6 (99999) is outside"},
+           Case{"current 0 ", "current 0 0 0 0 0 0",
+                "[HOMING] key 'current': joint eyes_version homes with 0 mA, outside 1..its current limit (600 mA"},
+           Case{"current 0 ", "current 0 0 0 0 601 0",
+                "[HOMING] key 'current': joint eyes_version homes with 601 mA, outside 1..its current limit (600 mA"},
+           Case{"current 0 ", "current 0 0 0 0 100", "[HOMING] key 'current': expected 6 values"},
        }) {
     const std::string what = error_for(c.line, c.replacement);
     EXPECT_NE(what.find(c.expected), std::string::npos) << c.replacement << " -> " << what;

@@ -13,7 +13,8 @@ Gearhead numbers read from its purchased: entry (each optional, absent = not pub
   hysteresis_loss_arcmin        the loop left after loading to +- rated torque: depends on the torque history
   torsional_stiffness           {T1, K1, K2} (N m, N m/rad): the wind-up under a torque, K1 up to T1, K2 beyond
 Homing against a hard stop (homing.<joint>.method: hard_stop) adds the stop's offset: at the stall the drive pushes
-the lug onto its pin with at most the board's current limit; gearhead and lug wind up under it. That wind-up is the
+the lug onto its pin with at most the homing run's own current limit (motor_control.homing.<control joint>
+.current_limit, which the firmware holds the motors to while they seek the stop); gearhead and lug wind up under it. That wind-up is the
 same at every power-up as far as the stall torque is; its mean is calibrated with the rest, and
 eye_accuracy.homing_torque_spread of it (the stall torque's spread) is not repeatable, plus one encoder count."""
 from __future__ import annotations
@@ -71,13 +72,27 @@ def stop_compliance(params: HeadParameters) -> float:
     return per_newton / (r * r) * 1000                           # a torque T pushes T / r: rad per N m
 
 
+def homing_current(params: HeadParameters, joint: str) -> float:
+    """mA per motor the board holds a pan's motor to while it seeks its stop: the current_limit of the homing run
+    of the control joint that drives the pans (motor_control.homing: on the eye board version homes both), never
+    more than the run limit (the firmware takes the lower, rg_board.c)."""
+    if joint not in drive_limits.PAN_JOINTS:
+        raise ParameterError(f"{params.path}: homing.{joint}: the eye budget's homing current is the eye pans' only")
+    tuning = params.root.node("motor_control").node("homing")
+    runs = [c for c in drive_limits.PAN_CONTROL if tuning.has(c)]
+    if not runs:
+        raise ParameterError(f"{params.path}: motor_control.homing: no homing run of "
+                             f"{' or '.join(drive_limits.PAN_CONTROL)} for {joint}, which homes against a hard stop")
+    return min(tuning.node(runs[0]).num("current_limit", positive=True), drive_limits.current_limit(params, joint))
+
+
 def homing_torque(params: HeadParameters, joint: str) -> float:
-    """N m at the joint, at most, that the drive pushes the lug onto its pin with at the stall: the board's
+    """N m at the joint, at most, that the drive pushes the lug onto its pin with at the stall: the homing run's
     current limit through the gearhead (the homing PWM limit gives less, by the winding's resistance)."""
     drive = params.drive(joint)
     kt = drive_limits.torque_constant(params, drive.text("motor"))
     eta = params.purchased(drive.text("gearhead")).num("efficiency", positive=True, maximum=1.0)
-    return kt * drive_limits.current_limit(params, joint) * 1e-3 * drive_limits.reduction(params, joint) * eta
+    return kt * homing_current(params, joint) * 1e-3 * drive_limits.reduction(params, joint) * eta
 
 
 def terms(params: HeadParameters, joint: str, dynamic_Nm: float) -> list[Term]:
@@ -114,10 +129,10 @@ def terms(params: HeadParameters, joint: str, dynamic_Nm: float) -> list[Term]:
     spread = params.root.node("eye_accuracy").num("homing_torque_spread", minimum=0, maximum=1)
     lug = math.degrees(t_home * stop_compliance(params))
     gear_home = math.degrees(wind_up(stiff, t_home)) / belt if stiff else None
-    at = f"{t_home:.3f} N m at the stall"
+    at = f"{t_home:.3f} N m at the stall ({homing_current(params, joint):g} mA)"
     out += [
         Term("stop_offset", f"the lug's bending on its pin, {at}", lug, True,
-             "current limit x kt x reduction x efficiency; lug cantilever (eye_accuracy.stop_*)"),
+             "homing current limit x kt x reduction x efficiency; lug cantilever (eye_accuracy.stop_*)"),
         Term("stop_spread", f"its spread ({spread:.0%}) and one count read at the stall", spread * lug + count, False,
              "eye_accuracy.homing_torque_spread"),
         Term("home_wind_up", f"gearhead wind-up, {at}", gear_home, True,

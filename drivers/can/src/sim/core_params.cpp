@@ -38,6 +38,7 @@ rg_axis_params_t axis_params(const JointConfig& jc) {
   p.homing.stop_position = static_cast<std::int32_t>(std::lround(h.stop * jc.counts_per_degree));
   p.homing.backoff = static_cast<std::int32_t>(std::lround(h.backoff * jc.counts_per_degree));
   p.homing.timeout_ms = static_cast<std::uint32_t>(std::lround(h.timeout * 1000.0));
+  p.homing.current_limit_ma = h.current;
   return p;
 }
 

@@ -67,6 +67,7 @@ void rg_board_init(rg_board_t *b, const rg_board_params_t *params, const rg_hal_
     const int32_t l0 = params->axes[0].current_limit_ma, l1 = params->axes[1].current_limit_ma;
     b->motors[0].current_limit_ma = b->motors[1].current_limit_ma = l0 < l1 ? l0 : l1;
   }
+  for (unsigned m = 0; m < 2u; ++m) b->motors[m].active_limit_ma = b->motors[m].current_limit_ma;
   read_encoders(b, true);
   for (unsigned i = 0; i < 2u; ++i) rg_trajectory_hold(&b->axes[i].traj, (float)b->axes[i].measured);
 }
@@ -157,6 +158,20 @@ static int16_t control(rg_board_t *b, unsigned axis, float dt) {
   return rg_pid_step(&a->pid, &a->pid_state, a->traj.ref - (float)a->measured, a->pid.output_limit);
 }
 
+// The limit a motor's current is held to this period: its run limit, or while an axis it drives seeks
+// its hard stop that run's homing limit, if lower (it sets how hard the stop is pressed). Computed each
+// period from the homing phase, so that every way out of the seek (the stop found, a timeout, a fault,
+// a mode change) is back at the run limit.
+static int32_t active_limit(const rg_board_t *b, unsigned m) {
+  int32_t limit = b->motors[m].current_limit_ma;
+  for (unsigned i = 0; i < 2u; ++i) {
+    if (b->params.coupling == RG_COUPLING_NONE && i != m) continue;  // motor m drives axis m alone
+    const int32_t homing = rg_homing_current_limit(b, i);
+    if (homing > 0 && homing < limit) limit = homing;
+  }
+  return limit;
+}
+
 // Keeps a motor's current within its limit: over the limit the duty ceiling drops in proportion
 // (current follows duty at stall, where the limit matters); below it the ceiling rises again,
 // within 50 periods when far below, more slowly the closer the current is to the limit, so that
@@ -165,7 +180,7 @@ static float limit_current(rg_board_t *b, unsigned m, float duty) {
   rg_motor_t *mo = &b->motors[m];
   const float full = (float)b->params.pwm_full_scale;
   const float current = fabsf((float)mo->last_current_ma);
-  const float limit = (float)mo->current_limit_ma;
+  const float limit = (float)mo->active_limit_ma;
   if (current > limit && current > 0.0f) {
     mo->duty_cap = fminf(mo->duty_cap, fabsf(duty)) * limit / current;
   } else {
@@ -198,6 +213,7 @@ static void drive(rg_board_t *b) {
                              ? running(b->axes[m].mode)
                              : (running(b->axes[0].mode) || running(b->axes[1].mode));
     const float full = (float)b->params.pwm_full_scale;
+    mo->active_limit_ma = active_limit(b, m);
     const float d = rg_clampf(limit_current(b, m, duty[m]), -full, full);
     // The brake holds whenever the bridge does not: applied before the bridge turns off (a disable, a
     // fault), released only once the bridge has been on and its loop holding for a whole period.

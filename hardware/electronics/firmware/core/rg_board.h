@@ -81,7 +81,8 @@ typedef struct {
 
 typedef struct {
   rg_encoder_t encoder;
-  int32_t current_limit_ma;
+  int32_t current_limit_ma;      // the run limit (table, set_current_limit)
+  int32_t active_limit_ma;       // what the limiter held this period: the run limit, or lower while homing
   float duty_cap;                // the current limiter's ceiling, PWM steps
   uint32_t overcurrent_periods;
   int32_t last_current_ma;

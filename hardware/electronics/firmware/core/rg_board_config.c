@@ -27,6 +27,7 @@ static void axis_from_config(const robogene_axis_config_t *c, rg_axis_params_t *
   p->homing.stop_position = c->homing_stop;
   p->homing.backoff = c->homing_backoff;
   p->homing.timeout_ms = c->homing_timeout_ms;
+  p->homing.current_limit_ma = c->homing_current_limit;
 }
 
 bool rg_board_params_for_address(uint8_t can_address, rg_board_params_t *out) {

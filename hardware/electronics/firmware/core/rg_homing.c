@@ -79,6 +79,12 @@ static int16_t seek(struct rg_board *b, unsigned axis, float dt) {
   return 0;
 }
 
+int32_t rg_homing_current_limit(const struct rg_board *b, unsigned axis) {
+  const rg_axis_t *a = &b->axes[axis];
+  const bool seeking = a->mode == ROBOGENE_CAN_CONTROL_MODE_CALIBRATION && a->homing.phase == RG_HOMING_SEEK;
+  return seeking ? a->homing.run.current_limit_ma : 0;
+}
+
 int16_t rg_homing_step(struct rg_board *b, unsigned axis, float dt) {
   rg_axis_t *a = &b->axes[axis];
   switch (a->homing.phase) {

@@ -44,12 +44,14 @@ typedef struct {
   // 0: the axis does not home itself (on the eye board vergence is found when version homes, and
   // homing_stop is the vergence read there). Direction, stop and backoff follow from the physical
   // joints' stops (homing: of the parameter file), the rest is the board's tuning (motor_control.homing).
+  // homing_current_limit holds the motors while the axis seeks its stop: how hard the stop is pressed.
   int8_t homing_direction;
   int32_t homing_stop;         // counts at the stop
   int32_t homing_speed;        // counts/s
   int16_t homing_pwm;          // PWM steps
   int32_t homing_backoff;      // counts moved away from the stop afterwards
   uint32_t homing_timeout_ms;
+  int32_t homing_current_limit;  // mA per motor while seeking the stop
   // 1: the axis's motor has a power-off holding brake on the board's brake output of its bridge (drives.<joint>.brake);
   // 0: the firmware never drives that output.
   uint8_t has_brake;
@@ -72,12 +74,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_pitch", -11264, 8260, 56320, 2800,
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u,
+      0, 0, 0, 0, 0, 0u, 0,
       1u},
      {"neck_roll", -27989, 27989, 209920, 1200,
       46, 1, 460, 8u, 0, 900, 300,
       1399.4666666666667f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u,
+      0, 0, 0, 0, 0, 0u, 0,
       1u}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
@@ -87,12 +89,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"neck_yaw", -43447, 43447, 193097, 1200,
       66, 1, 660, 8u, 0, 900, 300,
       965.4857142857144f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u,
+      0, 0, 0, 0, 0, 0u, 0,
       0u},
      {"eyes_tilt", -16774, 16774, 83870, 620,
       114, 1, 1140, 8u, 0, 900, 300,
       559.1365079365079f, 512u, 14u,
-      0, 0, 0, 0, 0, 0u,
+      0, 0, 0, 0, 0, 0u, 0,
       0u}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
@@ -102,12 +104,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
      {"eyes_version", -14677, 14677, 195698, 600,
       130, 1, 1300, 8u, 0, 900, 300,
       489.24444444444447f, 512u, 0u,
-      1, 27642, 4892, 250, 13943, 20000u,
+      1, 27642, 4892, 250, 13943, 20000u, 100,
       0u},
      {"eyes_vergence", 0, 11008, 97849, 600,
       260, 1, 2600, 8u, 0, 900, 300,
       244.62222222222223f, 512u, 0u,
-      0, 0, 0, 0, 0, 0u,
+      0, 0, 0, 0, 0, 0u, 0,
       0u}
    }}
 };

@@ -16,7 +16,7 @@ std::vector<std::uint8_t> calibrate(std::int16_t pwm, std::int16_t speed_raw) {
 
 struct HomingBoard : FakeBoard {
   HomingBoard() {
-    params.axes[0].homing = rg_homing_config_t{+1, 5000.0f, 250, 15000, 1000, 5000};
+    params.axes[0].homing = rg_homing_config_t{+1, 5000.0f, 250, 15000, 1000, 5000, 0};
     plant[0].counts = 3000;          // wherever the axis was left at power-up
     plant[0].stop_high = 3000 + 7000;  // the stop, 7000 counts further on
   }
@@ -90,8 +90,8 @@ namespace {
 
 TEST(CoreHoming, OnTheEyeBoardVersionHomesBothEyesAndFixesVergenceToo) {
   FakeBoard b(RG_COUPLING_VERSION_VERGENCE);
-  b.params.axes[0].homing = rg_homing_config_t{+1, 4000.0f, 250, 20000, 4000, 10000};  // version: L + R
-  b.params.axes[1].homing = rg_homing_config_t{0, 0.0f, 0, 0, 0, 0};                 // vergence at the stops: L - R
+  b.params.axes[0].homing = rg_homing_config_t{+1, 4000.0f, 250, 20000, 4000, 10000, 0};  // version: L + R
+  b.params.axes[1].homing = rg_homing_config_t{0, 0.0f, 0, 0, 0, 0, 0};              // vergence at the stops: L - R
   b.plant[0].counts = 1500;  // the eyes were left apart: the board knows neither
   b.plant[1].counts = -2500;
   b.plant[0].stop_high = 10000;

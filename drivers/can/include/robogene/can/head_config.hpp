@@ -31,6 +31,7 @@ struct HomingConfig {
   int pwm = 0;              // PWM steps
   double backoff = 0;       // degrees
   double timeout = 0;       // s
+  int current = 0;          // mA per motor while it seeks the stop (the run limit applies otherwise)
 };
 
 struct JointConfig {
