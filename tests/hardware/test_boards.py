@@ -165,7 +165,7 @@ def test_the_design_hash_follows_the_step_bytes(board_step, tmp_path, params, ex
 
 
 def test_a_missing_board_step_stops_the_build(tmp_path):
-    env = {"PYTHONPATH": f"{REPO / 'hardware' / 'mechanics'}:{REPO / 'hardware' / 'bom'}", "PATH": "/usr/bin:/bin"}
+    env = {"PYTHONPATH": f"{REPO / 'hardware' / 'head-model'}:{REPO / 'hardware' / 'mechanics'}:{REPO / 'hardware' / 'bom'}", "PATH": "/usr/bin:/bin"}
     missing = tmp_path / "no-board.step"
     result = subprocess.run([sys.executable, "-m", "robogene_head.fab", "--out", str(tmp_path / "fab"),
                              "--board-step", str(missing)], capture_output=True, text=True, env=env, timeout=300)

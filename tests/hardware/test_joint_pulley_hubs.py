@@ -166,6 +166,8 @@ def _yaw_set_screws_reached(params, angles):
     return chk.check(variant, Assembly(variant, chosen), seq)
 
 
+# Two assembly-sequence sweeps with the key along each screw: about 190 s on a 2-core machine under load.
+@pytest.mark.timeout(600)
 def test_the_yaw_set_screws_are_reached_where_drawn_and_not_behind_the_roll_drive(params):
     """At 0 and 90 deg the key comes in from the front and the side; turned to 180 deg, the first screw faces the
     roll drive's mount plate behind the yaw shaft and the key cannot reach it."""

@@ -138,7 +138,8 @@ def test_renders_show_something(fab):
 def test_second_build_rebuilds_nothing(fab, tmp_path):
     stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and
              p.suffix in (".step", ".stl", ".svg", ".pdf", ".png", ".glb")}
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "mechanics"), str(REPO / "hardware" / "bom")]))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "head-model"), str(REPO / "hardware" / "mechanics"),
+                                                   str(REPO / "hardware" / "bom")]))
     # Same inputs as the build that made the package (make passes the board BOMs and the board STEP).
     sources = json.loads((fab / "bom" / "sources.json").read_text())
     boards = [arg for b in sources["board_boms"] for arg in ("--board-bom", f"{b['path']}:{b['copies']}")]
