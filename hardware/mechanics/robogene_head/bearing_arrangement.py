@@ -23,7 +23,6 @@ fixed bearing and the rest floating. Anything else fails the build, naming the j
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import asdict, dataclass, field
 
 import numpy as np
