@@ -61,27 +61,28 @@ def _check(params, parts, steps, subassemblies=None):
     return chk.check(params, Assembly(params, parts), seq)
 
 
-FRONT_LUG = [{"name": "front lug", "parts": ["neck_pitch_front_lug"], "fixture": True},
-             {"name": "roll bearing", "parts": ["neck_roll_bearing_front"], "from": [[20, 0, 0]],
-              "fits": ["neck_pitch_front_lug"], "press": True}]
+ROLL_STAGE = [{"name": "roll stage", "parts": ["neck_roll_stage"], "fixture": True},
+              {"name": "roll bearing", "parts": ["neck_roll_bearing_front"], "from": [[20, 0, 0]],
+               "fits": ["neck_roll_stage"], "press": "inner"}]
 
 
 def test_the_roll_stage_goes_in_before_the_front_lug(params, neck_parts):
     parts = [neck_parts[n] for n in ("neck_pitch_stage", "neck_roll_stage", "neck_pitch_front_lug",
                                      "neck_roll_bearing_front")]
     good = [{"name": "stage", "parts": ["neck_pitch_stage"], "fixture": True},
-            {"name": "roll stage", "parts": ["neck_roll_stage"], "from": [[60, 0, 0]]},
-            {"name": "lug", "subassembly": "lug", "from": [[30, 0, 0]], "fits": ["neck_roll_stage", "neck_pitch_stage"]}]
-    report = _check(params, parts, good, {"lug": FRONT_LUG})
+            {"name": "roll stage", "subassembly": "roll", "from": [[60, 0, 0]]},
+            {"name": "lug", "parts": ["neck_pitch_front_lug"], "from": [[30, 0, 0]],
+             "fits": ["neck_roll_bearing_front", "neck_pitch_stage"]}]
+    report = _check(params, parts, good, {"roll": ROLL_STAGE})
     assert report.ok, chk.format_report(report)
     # The old order: the lug on first, then the roll stage with its integral shafts cannot get between the lugs.
     bad = [good[0], good[2], good[1]]
-    report = _check(params, parts, bad, {"lug": FRONT_LUG})
+    report = _check(params, parts, bad, {"roll": ROLL_STAGE})
     assert not report.ok
     [problem] = report.problems
-    # It runs into the front lug's bearing (its rear shaft in the bearing's bore, then its body against the lug).
+    # It runs into the front lug (its bearing into the lug's bore, or its body against the lug).
     assert problem.step == "step 3 'roll stage'"
-    assert re.match(r"neck_roll_stage (touches|collides with) (neck_roll_bearing_front|neck_pitch_front_lug) "
+    assert re.match(r"(neck_roll_stage|neck_roll_bearing_front) (touches|collides with) neck_pitch_front_lug "
                     r"[0-9.]+ mm along its path", problem.what), problem.what
 
 
@@ -116,53 +117,118 @@ def test_a_screw_the_driver_cannot_reach_is_caught(params):
 
 
 def test_a_contact_that_is_not_a_declared_fit_is_caught(params, neck_parts):
-    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
-    steps = copy.deepcopy(FRONT_LUG)
-    del steps[1]["fits"]     # the bearing slides in its bore
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(ROLL_STAGE)
+    del steps[1]["fits"]     # the bearing goes onto its journal
     report = _check(params, parts, steps)
     assert len(report.problems) == 1
-    assert "neck_roll_bearing_front touches neck_pitch_front_lug" in report.problems[0].what
+    assert "neck_roll_bearing_front touches neck_roll_stage" in report.problems[0].what
 
 
 def test_a_start_inside_the_assembly_is_caught(params, neck_parts):
-    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
-    steps = copy.deepcopy(FRONT_LUG)
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(ROLL_STAGE)
     steps[1]["from"] = [[2, 0, 0]]
     report = _check(params, parts, steps)
     assert "is not outside" in report.problems[0].what
 
 
 def test_a_bearing_pressed_across_its_axis_is_caught(params, neck_parts):
-    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
-    steps = copy.deepcopy(FRONT_LUG)
-    steps[1]["from"] = [[0, 0, 40]]
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front")]
+    steps = copy.deepcopy(ROLL_STAGE)
+    steps[1]["from"] = [[0, 0, 120]]     # down across the journal, past the yaw shaft's top
     report = _check(params, parts, steps)
     assert any("not pressed along its axis" in p.what or "collides" in p.what for p in report.problems)
 
 
 def test_every_part_must_be_in_the_sequence(params, neck_parts):
-    parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front", "neck_roll_bearing_ring")]
-    with pytest.raises(sequence.SequenceError, match="neck_roll_bearing_ring"):
-        _check(params, parts, FRONT_LUG)
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front", "neck_pitch_front_lug")]
+    with pytest.raises(sequence.SequenceError, match="neck_pitch_front_lug"):
+        _check(params, parts, ROLL_STAGE)
 
 
 def test_the_build_stops_naming_the_step_and_the_parts(params, neck_parts, tmp_path):
     parts = [neck_parts[n] for n in ("neck_pitch_stage", "neck_roll_stage", "neck_pitch_front_lug",
                                      "neck_roll_bearing_front")]
     broken = {"drivers": {"hex-2": {"blade": 2.4, "length": 75, "handle": 25}},
-              "screw_drivers": {"iso7380-M3": "hex-2"}, "subassemblies": {"lug": FRONT_LUG},
+              "screw_drivers": {"iso7380-M3": "hex-2"}, "subassemblies": {"roll": ROLL_STAGE},
               "sequence": [{"name": "stage", "parts": ["neck_pitch_stage"], "fixture": True},
-                           {"name": "lug", "subassembly": "lug", "from": [[30, 0, 0]], "fits": ["neck_pitch_stage"]},
-                           {"name": "roll stage", "parts": ["neck_roll_stage"], "from": [[60, 0, 0]]}]}
+                           {"name": "lug", "parts": ["neck_pitch_front_lug"], "from": [[30, 0, 0]],
+                            "fits": ["neck_pitch_stage"]},
+                           {"name": "roll stage", "subassembly": "roll", "from": [[60, 0, 0]]}]}
     path = tmp_path / "broken.yaml"
     path.write_text(yaml.safe_dump(broken))
     with pytest.raises(fab_build.BuildError) as caught:
         fab_build._assembly_sequence(tmp_path, Cache(tmp_path / "state.json"), Progress(), params,
                                Assembly(params, parts), "key", path)
     message = str(caught.value)
-    assert "step 3 'roll stage'" in message and re.search(r"neck_roll_stage (touches|collides with) neck_roll_bearing_front",
-                                                             message), message
+    assert "step 3 'roll stage'" in message and re.search(
+        r"(neck_roll_stage|neck_roll_bearing_front) (touches|collides with) neck_pitch_front_lug", message), message
     assert (tmp_path / "reports" / "assembly.txt").exists()
+
+
+def test_a_tight_ring_is_pressed_by_a_sleeve_on_that_ring(params, neck_parts):
+    """The floating roll bearing's inner ring is the tight one (k6): pressed onto its journal by a sleeve on the inner
+    ring, the lug then slides over its outer ring. The tool is checked clear and reported."""
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front", "neck_pitch_front_lug")]
+    steps = ROLL_STAGE + [{"name": "lug", "parts": ["neck_pitch_front_lug"], "from": [[30, 0, 0]],
+                           "fits": ["neck_roll_bearing_front"]}]
+    report = _check(params, parts, steps)
+    assert report.ok, chk.format_report(report)
+    [tool] = [t for s in report.steps for t in s.tools]
+    assert tool["tool"] == "press sleeve for neck_roll_bearing_front on its inner ring" and tool["clearance_mm"] >= 0
+
+
+def test_pressing_a_bearing_by_its_sliding_ring_is_caught(params, neck_parts):
+    """The old seat: the 61800 pressed into the lug by its outer ring, while its inner ring is the tight one."""
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front", "neck_pitch_front_lug")]
+    steps = [{"name": "roll stage", "parts": ["neck_roll_stage"], "fixture": True},
+             {"name": "lug", "parts": ["neck_pitch_front_lug"], "from": [[40, 0, 0]]},
+             {"name": "bearing", "parts": ["neck_roll_bearing_front"], "from": [[20, 0, 0]],
+              "fits": ["neck_pitch_front_lug", "neck_roll_stage"], "press": "outer"}]
+    report = _check(params, parts, steps)
+    [problem] = report.problems
+    assert problem.step == "step 3 'bearing'"
+    assert problem.what == ("neck_roll_bearing_front is pressed by its outer ring, but its tight ring is the inner (k6 on "
+                            "neck_roll_stage): the press force would go through the balls")
+    steps[2]["press"] = True       # a bearing's press must say which ring the tool bears on
+    assert "say which ring the tool bears on" in _check(params, parts, steps).problems[0].what
+
+
+def test_a_tight_ring_pushed_on_through_the_balls_is_caught(params, neck_parts):
+    """The old order: the bearing in the front lug on the bench, then the lug slid over the journal, which forces the
+    tight inner ring on through the balls."""
+    parts = [neck_parts[n] for n in ("neck_roll_stage", "neck_roll_bearing_front", "neck_pitch_front_lug")]
+    lug = [{"name": "lug", "parts": ["neck_pitch_front_lug"], "fixture": True},
+           {"name": "bearing into the lug", "parts": ["neck_roll_bearing_front"], "from": [[20, 0, 0]],
+            "fits": ["neck_pitch_front_lug"]}]
+    steps = [{"name": "roll stage", "parts": ["neck_roll_stage"], "fixture": True},
+             {"name": "lug over the journal", "subassembly": "lug", "from": [[30, 0, 0]], "fits": ["neck_roll_stage"]}]
+    report = _check(params, parts, steps, {"lug": lug})
+    [problem] = report.problems
+    assert problem.step == "step 2 'lug over the journal'"
+    assert problem.what.startswith("neck_roll_bearing_front's tight inner ring (k6 on neck_roll_stage) is pushed onto its "
+                                   "seat by moving neck_roll_bearing_front onto it")
+
+
+def test_a_journal_pushed_into_a_placed_tight_ring_is_caught(params):
+    """The old tilt order: the left 626 in the left plate, then the tilt frame's journal pushed into its tight inner
+    ring from the inside; the new one presses it onto the journal first and slides its outer ring into the bore."""
+    frame = {p.name: p for p in head_frame.build(params) + eyes.build(params)}
+    parts = [frame[n] for n in ("head_side_plate_left", "eyes_tilt_bearing_left", "eyes_tilt_frame")]
+    old = [{"name": "plate", "parts": ["head_side_plate_left"], "fixture": True},
+           {"name": "bearing", "parts": ["eyes_tilt_bearing_left"], "from": [[0, 20, 0]], "fits": ["head_side_plate_left"]},
+           {"name": "tilt frame", "parts": ["eyes_tilt_frame"], "from": [[0, -150, 0]], "fits": ["eyes_tilt_bearing_left"]}]
+    report = _check(params, parts, old)
+    [problem] = report.problems
+    assert problem.step == "step 3 'tilt frame'" and "moving eyes_tilt_frame into it" in problem.what
+    new = [{"name": "plate", "parts": ["head_side_plate_left"], "fixture": True},
+           {"name": "eyes", "subassembly": "eyes", "from": [[0, -150, 0]], "fits": ["head_side_plate_left"]}]
+    eyes_sub = [{"name": "tilt frame", "parts": ["eyes_tilt_frame"], "fixture": True},
+                {"name": "bearing", "parts": ["eyes_tilt_bearing_left"], "from": [[0, 30, 0]], "fits": ["eyes_tilt_frame"],
+                 "press": "inner"}]
+    report = _check(params, parts, new, {"eyes": eyes_sub})
+    assert report.ok, chk.format_report(report)
 
 
 def _eye_check(params):

@@ -24,8 +24,8 @@ SAMPLE_POSES = [
 ]
 # Parts whose cylindrical bores physically define each joint's axis.
 AXIS_PARTS = {
-    "neck_pitch": ["neck_pitch_bearing_right", "neck_pitch_bearing_ring"],
-    "neck_roll": ["neck_roll_bearing_front", "neck_roll_bearing_ring"],
+    "neck_pitch": ["neck_pitch_bearing_right", "neck_upright_right"],
+    "neck_roll": ["neck_roll_bearing_front", "neck_pitch_front_lug"],
     "neck_yaw": ["neck_yaw_bearing_lower", "neck_yaw_bearing_upper", "neck_yaw_joint_pulley"],
     "eyes_tilt": ["eyes_tilt_bearing_left", "eyes_tilt_bearing_right", "eyes_tilt_joint_pulley"],
     "left_eye_pan": ["left_eye_cup"],

@@ -22,7 +22,7 @@ from robogene_head_model import joint_config
 from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
-from . import (bearing_loads, drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
+from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
                sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
@@ -195,6 +195,15 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         bearing_loads.enforce(loads)
     except bearing_loads.BearingLoadError as exc:
         raise BuildError(str(exc)) from None
+    # One fixed and one floating bearing per shaft, measured in the CAD: the report goes into the package whether or
+    # not it passes.
+    arrangement = bearing_arrangement.analyse(params, parts)
+    _write(out / "reports" / "bearing-arrangement.txt", bearing_arrangement.format_report(arrangement) + "\n")
+    _write(out / "reports" / "bearing-arrangement.json", bearing_arrangement.dumps(arrangement))
+    try:
+        bearing_arrangement.enforce(arrangement)
+    except bearing_arrangement.BearingArrangementError as exc:
+        raise BuildError(f"{exc}, see {out / 'reports' / 'bearing-arrangement.txt'}") from None
     # The eyes' error against the stereo budget, term by term, and each joint's torque path against its drive's peak
     # torque: reported, so that docs/fabricate.md states them from the package. Neither fails the build yet: the eye
     # pans' 16/7 spur gearheads miss the budget (eye_accuracy.enforce is the check, for when a drive meets it; see
@@ -337,7 +346,8 @@ def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, asse
     except sequence.SequenceError as exc:
         raise BuildError(str(exc)) from None
     reports = [out / "reports" / "assembly.txt", out / "reports" / "assembly.json"]
-    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(sequence))
+    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(sequence),
+                 _source_hash(fits), params.path.read_bytes())
     if not cache.fresh("assembly-sequence", key, reports):
         report = assembly_sequence.check(params, assembly, seq,
                                          progress=lambda i, n, label: progress.step("assembly", i, n, label))

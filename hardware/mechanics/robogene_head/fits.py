@@ -36,6 +36,10 @@ SHAFT_EI = {"k": (0, 1, 1, 1, 2), "js": None}
 HOLE_EI = {"H": (0, 0, 0, 0, 0), "G": (2, 4, 5, 6, 7)}
 # M7 up to 30 mm: ES = -m + delta = 0 (ISO 286-2 table of M)
 HOLE_ES = {"M": (-2, 0, 0, 0, 0)}
+# ISO 492 normal tolerance class of radial bearings: the lower deviation (um) of the mean bore (by bore, over..up to
+# mm) and of the mean outside diameter (by outside diameter); the upper deviations are 0.
+RING_BORE = (((2.5, 10), -8), ((10, 18), -8), ((18, 30), -10))
+RING_OUTSIDE = (((6, 18), -8), ((18, 30), -9), ((30, 50), -11))
 
 
 def deviations(diameter: float, tolerance: str) -> tuple[float, float]:
@@ -144,15 +148,40 @@ def _depth(params: HeadParameters, link: str) -> int:
     return depth
 
 
-def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
-    """design -> its fits, from the assembly at rest."""
+@dataclass(frozen=True)
+class Seat:
+    """Where one bearing sits: the machined parts holding its outer ring (housing) and its bore (journal), the ISO 286
+    fit of each and which ring turns against the load (that one is the tight ring)."""
+    bearing: str          # part name
+    key: str              # catalogue key
+    housing: str          # part names
+    journal: str
+    housing_tolerance: str
+    journal_tolerance: str
+    inner_turns: bool
+
+    @property
+    def tight_ring(self) -> str:
+        return "inner" if self.inner_turns else "outer"
+
+    @property
+    def sliding_ring(self) -> str:
+        return "outer" if self.inner_turns else "inner"
+
+    def tolerance(self, ring: str) -> str:
+        return self.journal_tolerance if ring == "inner" else self.housing_tolerance
+
+
+def seats(params: HeadParameters, parts: list) -> dict[str, Seat]:
+    """bearing part name -> its seat, from the assembly at rest; bearings without both a housing and a journal are
+    left out."""
     poses = kinematics.link_poses(params, {})
     world = {p.name: p.shape.moved(location(poses[p.link])) for p in parts if p.kind in ("machined", "purchased")}
     catalog = params.root.node("purchased")
     bearings = [p for p in parts if p.kind == "purchased" and catalog.has(p.design)
                 and params.purchased(p.design).text("kind") == "bearing"]
-    coaxial = _fits(params).num("coaxiality", positive=True)
-    found: dict[str, dict[tuple, dict]] = {}
+    machined = [(part, _cylinders(world[part.name])) for part in parts if part.kind == "machined"]
+    out = {}
     for b in bearings:
         item = params.purchased(b.design)
         rings = {"housing": item.num("outside"), "journal": item.num("bore")}
@@ -161,24 +190,34 @@ def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
             continue
         origin, unit = outer[1], outer[2]
         lo, hi = _span(outer, origin, unit)
-        seats = {}
-        for part in parts:
-            if part.kind != "machined":
-                continue
+        found = {}
+        for part, cylinders in machined:
             for role, dia in rings.items():
-                for c in _cylinders(world[part.name]):
+                for c in cylinders:
                     if abs(c[0] - dia) < TOL and _same_line(origin, unit, c[1], c[2]):
                         c_lo, c_hi = _span(c, origin, unit)
                         if min(hi, c_hi) - max(lo, c_lo) > TOL:     # the seat holds the ring along its width
-                            seats[role] = part
-        if "housing" not in seats or "journal" not in seats:
+                            found[role] = part
+        if "housing" not in found or "journal" not in found:
             continue
         # the ring on the part nearer the base stands still relative to the load
-        inner_turns = _depth(params, seats["housing"].link) < _depth(params, seats["journal"].link)
-        for role, part in seats.items():
-            turns = inner_turns if role == "journal" else not inner_turns
-            tol = tolerance(params, role, turns)
-            entry = found.setdefault(part.design, {}).setdefault((role, b.design, tol), {"parts": {}, "n": 0})
+        inner_turns = _depth(params, found["housing"].link) < _depth(params, found["journal"].link)
+        out[b.name] = Seat(b.name, b.design, found["housing"].name, found["journal"].name,
+                           tolerance(params, "housing", not inner_turns), tolerance(params, "journal", inner_turns),
+                           inner_turns)
+    return out
+
+
+def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
+    """design -> its fits, from the assembly at rest."""
+    by_name = {p.name: p for p in parts}
+    coaxial = _fits(params).num("coaxiality", positive=True)
+    found: dict[str, dict[tuple, dict]] = {}
+    for seat in seats(params, parts).values():
+        for role, name, tol in (("housing", seat.housing, seat.housing_tolerance),
+                                ("journal", seat.journal, seat.journal_tolerance)):
+            part = by_name[name]
+            entry = found.setdefault(part.design, {}).setdefault((role, seat.key, tol), {"parts": {}, "n": 0})
             entry["parts"][part.name] = entry["parts"].get(part.name, 0) + 1
     out = {}
     for design, entries in found.items():
@@ -191,6 +230,36 @@ def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
                             coaxial if per_instance == 2 else 0.0))
         out[design] = fits
     return out
+
+
+def ring_deviations(diameter: float, ring: str) -> tuple[float, float]:
+    """(upper, lower) deviations in mm of a radial ball bearing's mean bore (ring "inner") or outside diameter
+    ("outer"), ISO 492 normal tolerance class."""
+    table = RING_BORE if ring == "inner" else RING_OUTSIDE
+    for (lo, hi), low in table:
+        if lo < diameter <= hi:
+            return 0.0, low / 1000
+    raise ValueError(f"a bearing {'bore' if ring == 'inner' else 'outside diameter'} of {diameter:g} mm is beyond the "
+                     f"ISO 492 table here")
+
+
+def clearance(seat: Seat, params: HeadParameters, ring: str) -> tuple[float, float, float]:
+    """(least, mean, most) clearance in mm between a bearing's ring and its seat; negative: interference."""
+    item = params.purchased(seat.key)
+    dia = item.num("bore" if ring == "inner" else "outside")
+    s_up, s_lo = deviations(dia, seat.tolerance(ring))
+    r_up, r_lo = ring_deviations(dia, ring)
+    if ring == "inner":      # the shaft inside the ring
+        least, most = r_lo - s_up, r_up - s_lo
+    else:                    # the ring inside the bore
+        least, most = s_lo - r_up, s_up - r_lo
+    return least, (least + most) / 2, most
+
+
+def slides(seat: Seat, params: HeadParameters, ring: str) -> bool:
+    """A ring slides in its seat when the fit's mean is a clearance (SKF's loose fits: H7 housings, g6 and h6 shafts
+    under a bearing of normal tolerance); a mean interference holds it."""
+    return clearance(seat, params, ring)[1] > 0
 
 
 def note(fits: list[Fit]) -> str:

@@ -16,6 +16,7 @@ import numpy as np
 import yaml
 
 DEFAULT_PATH = Path(__file__).resolve().parents[1] / "assembly-sequence.yaml"
+PRESS_RINGS = ("inner", "outer")
 STEP_KEYS = {"name", "parts", "subassembly", "from", "fits", "fasteners", "driver", "press", "flexible", "access",
              "fixture", "why"}
 
@@ -42,7 +43,8 @@ class Step:
     fits: list[str] = field(default_factory=list)        # patterns of parts it may touch on its way
     fasteners: list[str] = field(default_factory=list)   # screws put in after the parts are in place
     driver: str | None = None     # the fasteners' driver, when not the catalogue default
-    press: bool = False           # a bearing pressed in: straight along its axis, with an arbor behind it
+    press: bool = False           # pressed in: straight along its axis, with an arbor (a pin) or a tool on one ring
+    press_ring: str = ""          # a bearing's ring the tool bears on: "inner" (a sleeve, onto a journal) or "outer"
     flexible: str = ""            # placed by hand, not swept (belts, circlips): why
     access: tuple[str, np.ndarray] | None = None   # flexible part: a tool (driver name) along this axis
     straddles: list[str] = field(default_factory=list)   # parts the tool goes round (an external ring's shaft)
@@ -208,11 +210,25 @@ def _step(raw, where: str, context: str, number: int, names: list[str], drivers:
         access = (a["driver"], along / np.linalg.norm(along))
     straddles = _names(raw["access"].get("straddles", []), f"{where}.access.straddles", names) \
         if access and raw["access"].get("straddles") else []
+    press, press_ring = _press(raw.get("press"), where)
     step = Step(context, number, name, parts, path,
                 fits=_names(raw.get("fits", []), f"{where}.fits", names) if raw.get("fits") else [],
                 fasteners=_names(raw.get("fasteners", []), f"{where}.fasteners", names) if raw.get("fasteners") else [],
-                driver=driver, press=bool(raw.get("press", False)), flexible=flexible, access=access, straddles=straddles,
+                driver=driver, press=press, press_ring=press_ring, flexible=flexible, access=access, straddles=straddles,
                 fixture=fixture, subassembly=sub, why=str(raw.get("why", "")))
     if step.press and (len(step.parts) != 1 or len(step.path) != 2):
         raise SequenceError(f"{where}.press: a pressed step moves one bearing along one straight line")
     return step
+
+
+def _press(value, where: str) -> tuple[bool, str]:
+    """`press: true` (a pin, an arbor behind it) or `press: inner` / `press: outer` (the bearing's ring the tool bears
+    on)."""
+    if value in (None, False):
+        return False, ""
+    if value is True:
+        return True, ""
+    if value in PRESS_RINGS:
+        return True, value
+    raise SequenceError(f"{where}.press: expected true (a pin) or the bearing's ring the tool bears on "
+                        f"({' or '.join(PRESS_RINGS)}), got {value!r}")

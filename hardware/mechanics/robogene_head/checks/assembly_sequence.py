@@ -18,8 +18,13 @@ overlap is not measured; the fastener tests check the stack's studs and screws i
 
 Screws. Each screw goes in along its axis: a cylinder of its head's diameter (a set screw's own, from its socket) from the head outwards, and the
 driver's blade and then its handle beyond the blade's length, must be clear of everything in place until they
-leave the bounding box of the assembly so far. Pressed bearings: the path is one straight move along the
-bearing's axis and an arbor (the outer ring's diameter less 1 mm) behind it must be clear likewise. Flexible
+leave the bounding box of the assembly so far. Pressed parts: the path is one straight move along the part's axis and
+the tool behind it must be clear likewise: an arbor (the part's diameter less 1 mm) behind a pin or a bearing pressed
+into its housing by its outer ring, a sleeve over the journal on the inner ring of a bearing pressed onto its journal.
+
+Tight rings. A bearing's ring that turns against the load has the tight fit (fits.seats); it goes onto its seat only
+in a press step whose tool bears on that ring (press: inner or outer). A step that moves a bearing onto its tight
+seat, or a tight seat into a bearing already in place, would push that ring through the balls and fails. Flexible
 parts (belts, circlips) are placed by hand, not swept; a circlip's pliers get the same access check (an external
 ring's pliers go round the shaft it sits on, which the step names under access.straddles).
 """
@@ -33,7 +38,9 @@ import fcl
 import numpy as np
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
+from .. import fits as fits_mod
 from ..assembly import Assembly, Placed
+from ..geom import location
 from ..sequence import Sequence, Step
 
 MESH_DEFLECTION = 0.1      # mm: chordal deviation of the meshes; a mesh distance is within 2x of the true one
@@ -42,6 +49,7 @@ FIT_STEP = 1.0             # mm: sampling of declared fits and guides, under the
 VOLUME_TOLERANCE = 0.5     # mm^3: common volume below this is boolean noise on touching faces
 TOUCH = 0.01               # mm: closer than this is touching
 OUTSIDE_MARGIN = 5.0       # mm: a tool reaches this far beyond the assembly's bounding box
+SLEEVE_CLEARANCE = 0.25    # mm: a press sleeve's bore over the journal's diameter, its wall within the inner ring's face
 
 
 class AssemblyCheckError(RuntimeError):
@@ -269,7 +277,19 @@ class _Checker:
         if np.isfinite(closest):
             result.closest, result.closest_to = round(float(closest), 3), closest_to
 
-    def press(self, step: Step, placed: list[str], result: StepResult) -> None:
+    def tight_rings(self, step: Step, placed: list[str], result: StepResult, params, seats: dict) -> None:
+        """A step that is not a press must not put a bearing's tight ring onto its seat (see the module's text)."""
+        moving, here = set(step.parts), set(placed)
+        for name, seat in seats.items():
+            tight = seat.journal if seat.inner_turns else seat.housing
+            if (name in moving and tight in here) or (name in here and tight in moving):
+                what = f"moving {name} onto it" if name in moving else f"moving {tight} into it"
+                result.problems.append(Problem(step.label, (
+                    f"{name}'s tight {seat.tight_ring} ring ({seat.tolerance(seat.tight_ring)} on {tight}) is pushed onto "
+                    f"its seat by {what}: the force goes through the balls; press it with a tool on that ring")))
+                return
+
+    def press(self, step: Step, placed: list[str], result: StepResult, params=None, seats=None) -> None:
         bearing = step.parts[0]
         frame = self.w.frames[bearing]
         axis = frame[:3, 2]
@@ -277,12 +297,70 @@ class _Checker:
         if abs(abs(float(axis @ travel)) - 1) > 1e-6:
             result.problems.append(Problem(step.label, f"{bearing} is not pressed along its axis"))
             return
+        part = self.w.placed[bearing].part
+        is_bearing = params is not None and params.root.node("purchased").has(part.design) \
+            and params.purchased(part.design).text("kind") == "bearing"
+        if is_bearing:
+            seat = (seats or {}).get(bearing)
+            if not step.press_ring:
+                result.problems.append(Problem(step.label, f"{bearing}: say which ring the tool bears on "
+                                                           f"(press: inner or press: outer)"))
+                return
+            if seat is not None:
+                tight = seat.journal if seat.inner_turns else seat.housing
+                if step.press_ring != seat.tight_ring:
+                    result.problems.append(Problem(step.label, (
+                        f"{bearing} is pressed by its {step.press_ring} ring, but its tight ring is the {seat.tight_ring} "
+                        f"({seat.tolerance(seat.tight_ring)} on {tight}): the press force would go through the balls")))
+                    return
+                if tight not in placed:
+                    result.problems.append(Problem(step.label, f"{bearing}: its tight {seat.tight_ring} ring's seat "
+                                                               f"{tight} is not in place to press it onto"))
+                    return
+            if step.press_ring == "inner":
+                self._sleeve(step, placed, result, params, bearing, frame, travel)
+                return
         bb = self.w.boxes[bearing]
         centre = (bb[0] + bb[1]) / 2
         back = centre - travel * _half_extent(bb, travel)   # the bearing's trailing face
         diameter = _diameter_across(bb, travel) - 1.0
         self._tool(step, placed, result, f"press arbor for {bearing}", back, -travel, diameter, np.inf, diameter,
                    exclude={bearing})
+
+    def _sleeve(self, step: Step, placed: list[str], result: StepResult, params, bearing: str, frame, travel) -> None:
+        """A sleeve on the bearing's inner ring, over the journal, from the bearing's trailing face outwards until it
+        leaves the assembly so far: it must not cut into anything in place (the journal runs inside its bore)."""
+        item = params.purchased(self.w.placed[bearing].part.design)
+        bore = item.num("bore") + 2 * SLEEVE_CLEARANCE
+        outside = item.num("inner_ring_outside") - 2 * SLEEVE_CLEARANCE
+        width = item.num("width")
+        axis = frame[:3, 2]
+        sign = 1.0 if float(axis @ travel) > 0 else -1.0        # the bearing moves towards sign * axis
+        face_z = 0.0 if sign > 0 else width                       # its trailing face, in its own frame
+        start = frame[:3, :3] @ np.array([0, 0, face_z]) + frame[:3, 3]
+        names = [n for n in placed if n != bearing]
+        if not names:
+            return
+        reach = _exit_distance(start, -travel, self.w.bbox(names + [bearing])) + OUTSIDE_MARGIN
+        z0, z1 = sorted((face_z, face_z - sign * reach))
+        tube = cq.Solid.makeCylinder(outside / 2, z1 - z0, cq.Vector(0, 0, z0)).cut(
+            cq.Solid.makeCylinder(bore / 2, z1 - z0 + 2, cq.Vector(0, 0, z0 - 1)))
+        tube = tube.moved(location(frame))
+        tb = tube.BoundingBox()
+        box = (np.array([tb.xmin, tb.ymin, tb.zmin]), np.array([tb.xmax, tb.ymax, tb.zmax]))
+        worst = np.inf
+        for n in names:
+            if _box_gap(box, self.w.boxes[n]) > 1.0:
+                continue
+            common = _overlap(tube, self.w.shape(n))
+            if common > VOLUME_TOLERANCE:
+                result.problems.append(Problem(step.label, (
+                    f"press sleeve for {bearing} ({bore:g}/{outside:g} mm, on its inner ring): hits {n} "
+                    f"(common volume {common:.1f} mm^3)")))
+                return
+            worst = min(worst, _exact(tube, self.w.shape(n)))
+        result.tools.append({"tool": f"press sleeve for {bearing} on its inner ring", "reach_mm": round(reach, 1),
+                             "clearance_mm": None if not np.isfinite(worst) else round(float(worst), 3)})
 
     def fasteners(self, step: Step, placed: list[str], result: StepResult, params) -> None:
         done = list(placed)
@@ -395,6 +473,7 @@ def check(params, assembly: Assembly, sequence: Sequence, progress=None) -> Repo
     began, began_cpu = time.monotonic(), time.process_time()
     world = _World(assembly)
     checker = _Checker(world, sequence)
+    seats = fits_mod.seats(params, assembly.parts)
     results = []
     steps = sequence.steps()
     placed: dict[str, list[str]] = {}
@@ -412,7 +491,9 @@ def check(params, assembly: Assembly, sequence: Sequence, progress=None) -> Repo
         elif step.parts:
             checker.sweep(step, here, result)
             if step.press and not result.problems:
-                checker.press(step, here, result)
+                checker.press(step, here, result, params, seats)
+            elif not step.press and not result.problems:
+                checker.tight_rings(step, here, result, params, seats)
         else:
             result.note = "screws only: each one's driver checked along its axis"
         here.extend(step.parts)

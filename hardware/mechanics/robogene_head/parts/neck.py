@@ -19,25 +19,24 @@ BORE_RUNOUT = 1.0
 UPRIGHT_DRIVE_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face, 4 x 8 deep in the outer "
                       "face for the pitch motor mount. The two holes from the top and the front face into the bore are "
                       "the access to the pitch hub's set screws")
-UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing seat: outer "
-                        "ring against the shoulder, a shim ring, DIN 472 groove outside them")
+UPRIGHT_BEARING_NOTE = ("M3 tapped (tap drill 2.5), drawn at 3.0: 2 x 6 deep in the bottom face. Bearing bore straight "
+                        "through, no shoulder: the floating bearing's outer ring slides in it")
 PITCH_STAGE_NOTE = ("Rear lug: 2 x M3 tapped through (tap drill 2.5), drawn at 3.0, for the roll motor mount; cross bar: "
                     "2 x 3.4 through at the front for the front lug's screws. Left hub: 2 x M4 tapped (tap drill 3.3), "
                     "drawn at 4.0, from the shaft bore out, for the set screws on the pitch gearhead's shaft")
 ROLL_STAGE_NOTE = ("Rear hub: 2 x M4 tapped (tap drill 3.3), drawn at 4.0, from the shaft bore out, for the set screws on "
                    "the roll gearhead's shaft")
-FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing seat: outer ring "
-                  "against the shoulder, a shim ring, DIN 472 groove outside them")
+FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, drawn at 3.0. Bearing bore straight through, "
+                  "no shoulder: the floating bearing's outer ring slides in it")
 
 
-def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
-                  at: tuple[float, float], shim_key: str | None = None) -> tuple[list, float, float, float]:
-    """Bore of a floating bearing through a wall from `inner` to `outer` (coordinates along `axis`, either order):
-    a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's groove
-    and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over the
-    bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting tools
-    and where the bearing, the shim and the ring start (their inner faces) along the axis. shim_key: a joint's own
-    shim instead of geometry.bearing_seats.spacer."""
+def clamped_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
+                 at: tuple[float, float], shim_key: str) -> tuple[list, float, float, float]:
+    """Bore of a FIXED bearing's outer ring through a wall from `inner` to `outer` (coordinates along `axis`, either
+    order): a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's
+    groove and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over
+    the bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting
+    tools and where the bearing, the shim and the ring start (their inner faces) along the axis."""
     seats = params.geometry("bearing_seats")
     bearing = params.purchased(params.drive(joint).text("bearing"))
     ring = params.purchased(seats.text("bearing_ring"))
@@ -47,20 +46,16 @@ def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float
                              f"{ring.num('bore'):g} mm bore, the {joint} bearing is {bo:g} outside")
     inner_ring = bearing.num("inner_ring_outside", positive=True)
     lugs = ring.num("lug_inner_diameter", positive=True)
-    s = 0.0
-    shim_key = spacer(params) if shim_key is None else shim_key
-    if shim_key:
-        shim = params.purchased(shim_key)
-        if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
-            raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: {shim_key} "
-                                 f"({shim.num('bore'):g} x {shim.num('outside'):g}) must fit the {bo:g} mm bore and clear "
-                                 f"the {joint} bearing's inner ring ({inner_ring:g} across)")
-        s = shim.num("thickness", positive=True)
+    shim = params.purchased(shim_key)
+    if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
+        raise ParameterError(f"{params.path}: the {joint} bearing's shim {shim_key} ({shim.num('bore'):g} x "
+                             f"{shim.num('outside'):g}) must fit the {bo:g} mm bore and clear the bearing's inner ring "
+                             f"({inner_ring:g} across)")
+    s = shim.num("thickness", positive=True)
     if lugs < inner_ring and s < LUG_GAP:
-        raise ParameterError(f"{params.path}: geometry.bearing_seats.spacer: the {seats.text('bearing_ring')} ring's lugs "
-                             f"reach in to {lugs:g}, over the {joint} bearing's inner ring ({inner_ring:g} across), "
-                             f"which turns while they stand still: a shim ring at least {LUG_GAP:g} thick must keep "
-                             f"them off it (this one: {s:g})")
+        raise ParameterError(f"{params.path}: the {seats.text('bearing_ring')} ring's lugs reach in to {lugs:g}, over the "
+                             f"{joint} bearing's inner ring ({inner_ring:g} across), which turns while they stand still: "
+                             f"a shim ring at least {LUG_GAP:g} thick must keep them off it (this one: {s:g})")
     sign = 1.0 if outer > inner else -1.0
     wall = abs(outer - inner)
     land, m = seats.num("land", positive=True), ring.num("groove_width", positive=True)
@@ -82,10 +77,33 @@ def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float
     return tools, b0, s0, g0
 
 
-def spacer(params: HeadParameters) -> str:
-    """The shim ring between a floating bearing and its retaining ring ("" where the seats have none)."""
-    seats = params.geometry("bearing_seats")
-    return seats.text("spacer") if seats.has("spacer") else ""
+def floating_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
+                  at: tuple[float, float]) -> tuple[list, float]:
+    """Bore of a FLOATING bearing's outer ring through a wall from `inner` to `outer` (coordinates along `axis`, either
+    order): one bore of the outer ring's diameter straight through (the sliding fit, fits.housing_standing_ring), no
+    shoulder and no ring, so the outer ring moves with the shaft as it grows; the bearing sits in the middle of the wall.
+    The inner ring is the tight one, pressed onto its journal against the journal's collar (journal_collar). Returns the
+    cutting tool and where the bearing starts (its inner face) along the axis."""
+    bearing = params.purchased(params.drive(joint).text("bearing"))
+    bw, bo = bearing.num("width", positive=True), bearing.num("outside", positive=True)
+    wall = abs(outer - inner)
+    if wall < bw:
+        raise ParameterError(f"{params.path}: the wall holding the {joint} bearing is {wall:g} thick, under the "
+                             f"bearing's {bw:g} mm width")
+    sign = 1.0 if outer > inner else -1.0
+    return [geom.cyl(axis, bo, inner - sign, outer + sign, at)], inner + sign * (wall - bw) / 2
+
+
+def journal_collar(params: HeadParameters, joint: str) -> float:
+    """The diameter of the shoulder a floating bearing's inner ring is pressed against (geometry.bearing_seats.collar):
+    over the journal, within the inner ring's face, so that it turns clear of the seal and the outer ring."""
+    bearing = params.purchased(params.drive(joint).text("bearing"))
+    collar = params.geometry("bearing_seats").num("collar", positive=True)
+    bore, face = bearing.num("bore", positive=True), bearing.num("inner_ring_outside", positive=True)
+    if not bore < collar <= face:
+        raise ParameterError(f"{params.path}: geometry.bearing_seats.collar: {collar:g} must be over the {joint} "
+                             f"bearing's {bore:g} mm bore and within its inner ring's face ({face:g} across)")
+    return collar
 
 
 def bearing_ring(params: HeadParameters) -> str:
@@ -147,7 +165,7 @@ def _base(params: HeadParameters) -> list[Part]:
                              *bottom_holes,
                              *[geom.cyl("y", 3.0, y_face - 8, y_face + 1, (fx, hp - fy))
                                for fx, fy in mounts.mount_fixings(params, "neck_pitch")])
-    seat, b0, s0, g0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
+    seat, b0 = floating_seat(params, "neck_pitch", gap / 2, y_face, "y", (0, hp))
     # the pitch encoder's bracket screws into the right upright's outer face (turned back into the design frame)
     encoder_holes = [t.moved(loc(rz=180)) for t in joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_pitch"])]
     upright_bearing = geom.cut(block, *seat, *bottom_holes, *encoder_holes)
@@ -170,16 +188,11 @@ def _base(params: HeadParameters) -> list[Part]:
         parts.append(purchased.screw(params, f"base_flange_screw_{i}", SCREW, "neck_base", loc(x, y, z_flange)))
     for i, (x, y) in enumerate(upright_screws):
         parts.append(purchased.screw(params, f"upright_screw_{i}", SCREW, "neck_base", loc(x, y, -T)))
-    # The floating pitch bearing and its ring in the right upright (design +y, turned to -y); the drive is bolted on
-    # the left upright.
+    # The floating pitch bearing in the right upright's bore (design +y, turned to -y), its inner ring on the pitch
+    # stage's journal (_pitch_stage); the drive is bolted on the left upright.
     y_out = gap / 2 + ut
     parts.append(purchased.bearing(params, "neck_pitch_bearing_right", params.drive("neck_pitch").text("bearing"),
                                    "neck_base", loc(0, -b0, hp, rx=90)))
-    if spacer(params):
-        parts.append(purchased.shim(params, "neck_pitch_bearing_spacer", spacer(params), "neck_base",
-                                    loc(0, -s0, hp, rx=90)))
-    parts.append(purchased.retaining_ring(params, "neck_pitch_bearing_ring", bearing_ring(params), "neck_base",
-                                          loc(0, -g0, hp, rx=90)))
     gear = params.purchased(params.drive("neck_pitch").text("gearhead"))
     pt = mounts.mount_thickness(params, "neck_pitch")
     mount = mounts.mount_plate(params, "neck_pitch", mounts.mount_outline(params, "neck_pitch"), gear.num("diameter"))
@@ -230,6 +243,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
         geom.box(-x_out, -span / 2, -lw / 2, lw / 2, bar, zr + lw / 2),        # rear lug
         geom.cyl("y", hub.diameter, bw / 2 - 1, y_out - hub.clearance),     # the drive's hub, integral with the stage
         geom.cyl("y", pitch_bore, -y_out, -bw / 2 + 1),                      # the floating bearing's journal
+        geom.cyl("y", journal_collar(params, "neck_pitch"), -pitch_bearing_at(params), -bw / 2 + 1),  # and its collar
     )
     # The rear lug carries no bearing: the roll gearhead's own bearings are the roll shaft's fixed bearing.
     stage = geom.cut(stage,
@@ -239,7 +253,7 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
                      *[geom.cyl("x", 3.0, -x_out - 1, -span / 2 + 1, (fy, zr + fx)) for fx, fy in roll_fixings],
                      *[geom.cyl("z", mounts.clearance_hole(params, SCREW), bar - 1, bh / 2 + 1, c) for c in lug_screws],
                      *joint_encoders.shaft_cuts(params, joint_encoders.ends(params)["neck_pitch"]))
-    seat, b0, s0, g0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
+    seat, b0 = floating_seat(params, "neck_roll", fx0, fx1, "x", (0, zr))
     front = geom.cut(geom.box(fx0, fx1, -lw / 2, lw / 2, bh / 2, zr + lw / 2), *seat,
                      *[geom.cyl("z", 3.0, bh / 2 - 1, bh / 2 + lug_screw.num("length") - 4, c) for c in lug_screws],
                      *joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_roll"]))   # the roll encoder's bracket
@@ -252,11 +266,6 @@ def _pitch_stage(params: HeadParameters) -> list[Part]:
     parts += hub_screws(params, hub, "neck_pitch_link")
     key = params.drive("neck_roll").text("bearing")
     parts.append(purchased.bearing(params, "neck_roll_bearing_front", key, "neck_pitch_link", loc(b0, 0, zr, ry=90)))
-    if spacer(params):
-        parts.append(purchased.shim(params, "neck_roll_bearing_spacer", spacer(params), "neck_pitch_link",
-                                    loc(s0, 0, zr, ry=90)))
-    parts.append(purchased.retaining_ring(params, "neck_roll_bearing_ring", bearing_ring(params), "neck_pitch_link",
-                                          loc(g0, 0, zr, ry=90)))
     roll_gear = params.purchased(params.drive("neck_roll").text("gearhead"))
     rd = roll_gear.num("diameter")
     rt = mounts.mount_thickness(params, "neck_roll")
@@ -298,6 +307,7 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
                              f"screws at x = {hub.plane:g}")
     stage = geom.union(geom.box(-bl / 2, bl / 2, -bw / 2, bw / 2, -bh / 2, bh / 2),
                        geom.cyl("x", roll_bore, bl / 2 - 1, x_front), geom.cyl("x", roll_bore, -x_out, -bl / 2 + 1),
+                       geom.cyl("x", journal_collar(params, "neck_roll"), bl / 2 - 1, roll_bearing_at(params)),  # its collar
                        geom.cyl("x", hub.diameter, -x_lug + hub.clearance, -bl / 2 + 1),      # the drive's hub
                        geom.cyl("z", shaft, bh / 2 - 1, zy + yaw_bearings.shaft_end(params)))
     # The joint pulley's hub hangs below it, onto the roll stage; its set screws bear on flats on the fixed yaw shaft.
@@ -318,6 +328,19 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
     ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
          for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))] \
         + yaw_bearings.shaft_parts(params, zy)
+
+
+def pitch_bearing_at(params: HeadParameters) -> float:
+    """|y| of the floating pitch bearing's inner face (towards the stage), where the journal's collar ends."""
+    up = params.geometry("neck_base", "upright")
+    gap = up.num("gap", positive=True)
+    return floating_seat(params, "neck_pitch", gap / 2, gap / 2 + up.num("thickness", positive=True), "y", (0, 0))[1]
+
+
+def roll_bearing_at(params: HeadParameters) -> float:
+    """x of the floating roll bearing's inner face (towards the roll stage), where the front journal's collar ends."""
+    fx0, fx1 = front_lug_x(params)
+    return floating_seat(params, "neck_roll", fx0, fx1, "x", (0, 0))[1]
 
 
 def pitch_hub_of(params: HeadParameters, at: tuple[float, float]) -> drive_hubs.Hub:

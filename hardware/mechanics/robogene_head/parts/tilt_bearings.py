@@ -4,7 +4,7 @@
 
 The tilt frame's journals turn against the load, so the inner rings are the tight ones (fits: journal_turning_ring)
 and the floating bearing floats at its outer ring. Right (fixed): in a boss on the right side plate's outer face, its
-outer ring between the plate's shoulder and a DIN 472 ring on a shim (neck.floating_seat, with this joint's thicker
+outer ring between the plate's shoulder and a DIN 472 ring on a shim (neck.clamped_seat, with this joint's own
 shim), its inner ring between a collar of the journal and a DIN 6799 retaining washer in a groove of the journal, which
 stays within the inner ring's face. Left (floating): its outer ring slides in the left plate's through-bore, its inner
 ring sits against the left journal's collar. The left plate keeps its 6 mm: the tilt pulleys run just outside it.
@@ -61,7 +61,7 @@ def layout(params: HeadParameters) -> Layout:
         raise ParameterError(f"{params.path}: {path}.boss.diameter: {boss.num('diameter'):g} leaves under 1 mm of wall "
                              f"round the {neck.bearing_ring(params)} groove")
     shim_key = node.text("spacer")
-    tools, b0, s0, g0 = neck.floating_seat(params, "eyes_tilt", -inner, -outer, "y", (tilt[0], tilt[2]), shim_key)
+    tools, b0, s0, g0 = neck.clamped_seat(params, "eyes_tilt", -inner, -outer, "y", (tilt[0], tilt[2]), shim_key)
     clip_key = node.text("clip")
     clip = params.purchased(clip_key)
     if clip.text("kind") != "shaft_ring" or abs(clip.num("shaft") - bore) > 1e-9:

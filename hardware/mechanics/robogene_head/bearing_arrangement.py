@@ -1,0 +1,398 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Each joint shaft's bearing arrangement, measured in the CAD: one fixed bearing, the others floating.
+
+For every ball bearing that has a housing and a journal (fits.seats), each ring is probed along the bearing's axis,
+both ways: a thin tube over the ring's face (the inner ring from its bore to its face's outer edge, the outer ring
+from the pitch circle, or the catalogue's outer_ring_inside, to its outside) is intersected with the parts that stand
+with that ring's seat (the housing's link for the outer ring, the journal's link for the inner ring); the nearest one
+is the ring's stop on that side and its distance the ring's axial room. A shim is no stop: the probe goes on beyond
+it. A ring is located on a side when its stop is within bearing_arrangement.located_within (the CAD is nominal).
+  The bearing stops the shaft moving towards +axis when the shaft's side holds its inner ring on the -axis face and
+  the housing holds its outer ring on the +axis face; likewise towards -axis. Both ways: a fixed bearing. One way:
+  a bearing that locates one way (a cross-located pair is two of them, facing each other). Neither: floating.
+A floating bearing must let its sliding ring move (the ring whose fit's mean is a clearance, fits.slides) at least
+  alpha dT L + t(L)
+each way, where L is its distance from the fixed bearing along the axis, alpha dT the growth of an aluminium shaft
+`temperature_difference` warmer than its aluminium housing, and t(L) the ISO 2768-m tolerance of a length L (the
+drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
+Per joint: the joints under gearhead_fixed have the gearhead's own (preloaded) output bearings as their fixed
+bearing, which counts when the gearhead's axis is the shaft's: every ball bearing there must float. The joints under
+cross_located have two bearings each locating one way, in opposite directions. Every other joint has exactly one
+fixed bearing and the rest floating. Anything else fails the build, naming the joint and the bearing."""
+from __future__ import annotations
+
+import json
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
+
+from . import fits, geom, kinematics
+from .geom import exact_bounds, location
+
+EDGE = 0.05        # mm the probe keeps inside a ring's face, off the seat's own cylinder
+ON_AXIS = 1e-3     # mm: a gearhead's axis this close to the shaft's is on it
+# ISO 2768-1 class m: permissible deviations (mm) of linear sizes by nominal length (over, up to] mm.
+ISO_2768_M = (((0.5, 6), 0.1), ((6, 30), 0.2), ((30, 120), 0.3), ((120, 400), 0.5), ((400, 1000), 0.8))
+
+
+class BearingArrangementError(RuntimeError):
+    """A shaft without one fixed bearing, or a floating bearing that cannot move; the message names them."""
+
+
+@dataclass(frozen=True)
+class Side:
+    gap: float | None     # mm from the ring's face to its stop; None: no stop within the search length
+    stop: str             # the stop's part name ("" when none)
+
+
+@dataclass(frozen=True)
+class Ring:
+    ring: str             # "inner" or "outer"
+    seat: str             # the machined part it sits in or on
+    tolerance: str        # ISO 286
+    slides: bool
+    mean_clearance: float  # mm, negative: interference
+    minus: Side           # towards -axis (the bearing's axis, see BearingState.axis)
+    plus: Side
+
+
+@dataclass
+class BearingState:
+    joint: str
+    bearing: str
+    key: str
+    axis: list            # world unit vector of the bearing's +axis
+    centre: list          # world mm
+    role: str             # "fixed", "one way", "floating"
+    stops_shaft: list     # "+axis" / "-axis": the shaft's motions relative to the housing this bearing stops
+    inner: Ring
+    outer: Ring
+    span: float | None = None          # mm along the axis from the joint's fixed bearing (floating bearings)
+    required: float | None = None      # mm of room each way the sliding ring needs
+
+    def ring(self, name: str) -> Ring:
+        return self.inner if name == "inner" else self.outer
+
+
+@dataclass
+class JointResult:
+    joint: str
+    arrangement: str      # "gearhead + floating", "fixed + floating", "cross-located"
+    fixed: str            # the fixed bearing (a part name, or the gearhead's)
+    bearings: list[BearingState]
+    problems: list[str] = field(default_factory=list)
+
+
+@dataclass
+class Report:
+    located_within: float
+    search: float
+    joints: list[JointResult]
+    problems: list[str]
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems and not any(j.problems for j in self.joints)
+
+    @property
+    def failures(self) -> list[str]:
+        return self.problems + [p for j in self.joints for p in j.problems]
+
+
+def _node(params: HeadParameters):
+    return params.root.node("bearing_arrangement")
+
+
+def _joint_list(params: HeadParameters, key: str) -> list[str]:
+    value = _node(params).raw(key)
+    if not isinstance(value, list) or not all(j in CHAIN_JOINTS for j in value):
+        raise ParameterError(f"{params.path}: bearing_arrangement.{key}: expected a list of chain joints "
+                             f"({', '.join(CHAIN_JOINTS)}), got {value!r}")
+    return value
+
+
+def general_tolerance(length: float) -> float:
+    """ISO 2768-m permissible deviation (mm) of a length (mm)."""
+    for (lo, hi), t in ISO_2768_M:
+        if lo < length <= hi:
+            return t
+    raise ValueError(f"a length of {length:g} mm is outside ISO 2768-m's table (0.5 to 1000 mm)")
+
+
+def required_float(params: HeadParameters, span: float) -> tuple[float, float, float]:
+    """(room each way, thermal growth, tolerance) in mm for a floating bearing `span` mm from the fixed one."""
+    node = _node(params)
+    growth = node.num("expansion", positive=True) * node.num("temperature_difference", positive=True) * span
+    tol = general_tolerance(span)
+    return growth + tol, growth, tol
+
+
+def _matrix(loc) -> np.ndarray:
+    t = loc.wrapped.Transformation()
+    m = np.eye(4)
+    for i in range(3):
+        for j in range(4):
+            m[i, j] = t.Value(i + 1, j + 1)
+    return m
+
+
+def _annulus(params: HeadParameters, key: str, ring: str) -> tuple[float, float]:
+    """Radii (mm) of a ring's face: what a stop must overlap to hold that ring."""
+    item = params.purchased(key)
+    d, big = item.num("bore", positive=True), item.num("outside", positive=True)
+    if ring == "inner":
+        return d / 2 + EDGE, item.num("inner_ring_outside", positive=True) / 2 - EDGE
+    inside = item.num("outer_ring_inside") if item.has("outer_ring_inside") else (d + big) / 2
+    return inside / 2 + EDGE, big / 2 - EDGE
+
+
+class _Probe:
+    """Parts in one bearing's frame (its axis +z, its faces at z = 0 and z = width), probed along z."""
+
+    def __init__(self, params: HeadParameters, parts_by_link: dict, poses: dict, frame: np.ndarray, width: float,
+                 search: float):
+        self.params, self.by_link, self.poses, self.width, self.search = params, parts_by_link, poses, width, search
+        self.inverse = np.linalg.inv(frame)
+        self.local: dict[str, object] = {}
+        self.catalog = params.root.node("purchased")
+
+    def _shape(self, part):
+        if part.name not in self.local:
+            self.local[part.name] = part.shape.moved(location(self.inverse @ self.poses[part.link]))
+        return self.local[part.name]
+
+    def _is_shim(self, part) -> bool:
+        return part.kind == "purchased" and self.catalog.has(part.design) \
+            and self.params.purchased(part.design).text("kind") == "shim"
+
+    def side(self, link: str, radii: tuple[float, float], sign: int, skip: set[str]) -> Side:
+        """The nearest stop of a ring on `link` beyond the ring's face towards sign * z, through shims."""
+        face = self.width if sign > 0 else 0.0
+        end = face + sign * self.search
+        free, skip = 0.0, set(skip)
+        while (end - face) * sign > 1e-9:
+            z0, z1 = sorted((face, end))
+            probe = geom.tube("z", 2 * radii[1], 2 * radii[0], z0, z1)
+            lo, hi = np.array([-radii[1], -radii[1], z0]), np.array([radii[1], radii[1], z1])
+            best = None
+            for part in self.by_link.get(link, []):
+                if part.name in skip:
+                    continue
+                shape = self._shape(part)
+                b0, b1 = exact_bounds(shape)
+                if np.any(b0 > hi) or np.any(b1 < lo):
+                    continue
+                common = probe.intersect(shape)
+                if common.Volume() < 1e-6:
+                    continue
+                c0, c1 = exact_bounds(common)
+                near, far = (c0[2], c1[2]) if sign > 0 else (c1[2], c0[2])
+                gap = abs(near - face)
+                if best is None or gap < best[0]:
+                    best = (gap, part, far)
+            if best is None:
+                return Side(None, "")
+            gap, part, far = best
+            if not self._is_shim(part):
+                return Side(round(free + gap, 4), part.name)
+            free += gap           # a shim is pushed by whatever pushes it: its free room counts, its thickness not
+            face = far
+            skip.add(part.name)
+        return Side(None, "")
+
+
+def _joint_of(params: HeadParameters, a: str, b: str) -> str | None:
+    for name in CHAIN_JOINTS:
+        j = params.joints[name]
+        if {j.parent, j.child} == {a, b}:
+            return name
+    return None
+
+
+def _direction(v: np.ndarray) -> str:
+    for i, name in enumerate("xyz"):
+        if abs(abs(v[i]) - 1) < 1e-6:
+            return ("+" if v[i] > 0 else "-") + name
+    return "(" + ", ".join(f"{c:.3f}" for c in v) + ")"
+
+
+def _bearing_state(params, seat, part, joint, by_link, by_name, poses, located, search) -> BearingState:
+    frame = poses[part.link] @ _matrix(part.placement)
+    width = params.purchased(seat.key).num("width", positive=True)
+    probe = _Probe(params, by_link, poses, frame, width, search)
+    rings = {}
+    for ring, seat_part in (("inner", seat.journal), ("outer", seat.housing)):
+        link = by_name[seat_part].link
+        radii = _annulus(params, seat.key, ring)
+        sides = [probe.side(link, radii, sign, {part.name}) for sign in (-1, 1)]
+        least, mean, most = fits.clearance(seat, params, ring)
+        rings[ring] = Ring(ring, seat_part, seat.tolerance(ring), mean > 0, round(mean, 4), sides[0], sides[1])
+
+    def held(side: Side) -> bool:
+        return side.gap is not None and side.gap <= located
+
+    inner, outer = rings["inner"], rings["outer"]
+    stops = []
+    if held(inner.minus) and held(outer.plus):
+        stops.append("+axis")
+    if held(inner.plus) and held(outer.minus):
+        stops.append("-axis")
+    role = {2: "fixed", 1: "one way", 0: "floating"}[len(stops)]
+    axis = frame[:3, 2]
+    centre = frame[:3, :3] @ np.array([0, 0, width / 2]) + frame[:3, 3]
+    return BearingState(joint, part.name, seat.key, [round(float(c), 6) for c in axis],
+                        [round(float(c), 4) for c in centre], role, stops, inner, outer)
+
+
+def _gearhead_on_axis(params, parts_by_name, poses, joint, bearing: BearingState) -> tuple[str, np.ndarray] | None:
+    """The joint's gearhead and its flange's centre (world) when its axis is the bearing's."""
+    gear = parts_by_name.get(f"{joint}_gearhead")
+    if gear is None:
+        return None
+    frame = poses[gear.link] @ _matrix(gear.placement)
+    axis, origin = np.array(bearing.axis), np.array(bearing.centre)
+    if np.linalg.norm(np.cross(frame[:3, 2], axis)) > 1e-6:
+        return None
+    d = frame[:3, 3] - origin
+    if np.linalg.norm(d - np.dot(d, axis) * axis) > ON_AXIS:
+        return None
+    return gear.name, frame[:3, 3]
+
+
+def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located: float) -> list[str]:
+    problems = []
+    axis = np.array(b.axis)
+    b.span = round(abs(float(np.dot(np.array(b.centre) - fixed_at, axis))), 2)
+    need, growth, tol = required_float(params, b.span)
+    b.required = round(need, 3)
+    sliding = b.ring(seat.sliding_ring)
+    tight = b.ring(seat.tight_ring)
+    where = f"{b.joint}: {b.bearing}"
+    if not sliding.slides:
+        problems.append(f"{where} floats on its {sliding.ring} ring, but that ring's fit {sliding.tolerance} holds it "
+                        f"(mean interference {-sliding.mean_clearance * 1000:.1f} um): a floating ring needs a sliding fit")
+    for label, side in (("-axis", sliding.minus), ("+axis", sliding.plus)):
+        if side.gap is not None and side.gap < need:
+            direction = _direction(axis if label == "+axis" else -axis)
+            problems.append(f"{where} must float, but its {sliding.ring} ring ({sliding.tolerance}, the sliding one) has "
+                            f"{side.gap:.2f} mm of room towards {direction} to {side.stop}: it needs {need:.2f} mm "
+                            f"({growth:.3f} of growth over {b.span:g} mm at {_node(params).num('temperature_difference'):g} K "
+                            f"+ {tol:g} ISO 2768-m)")
+    if not any(side.gap is not None and side.gap <= located for side in (tight.minus, tight.plus)):
+        problems.append(f"{where}: its tight {tight.ring} ring ({tight.tolerance}) sits against no shoulder")
+    return problems
+
+
+def analyse(params: HeadParameters, parts: list) -> Report:
+    node = _node(params)
+    located = node.num("located_within", positive=True)
+    search = node.num("search", positive=True)
+    gearhead_fixed = _joint_list(params, "gearhead_fixed")
+    cross = _joint_list(params, "cross_located")
+    poses = kinematics.link_poses(params, {})
+    relevant = [p for p in parts if p.kind in ("machined", "purchased", "printed")]
+    by_link: dict[str, list] = {}
+    for p in relevant:
+        by_link.setdefault(p.link, []).append(p)
+    by_name = {p.name: p for p in relevant}
+    seats = fits.seats(params, parts)
+    problems = []
+    states: dict[str, list[BearingState]] = {}
+    for name, seat in seats.items():
+        joint = _joint_of(params, by_name[seat.housing].link, by_name[seat.journal].link)
+        if joint is None:
+            problems.append(f"{name}: its housing {seat.housing} and journal {seat.journal} are not the two sides of a joint")
+            continue
+        states.setdefault(joint, []).append(
+            _bearing_state(params, seat, by_name[name], joint, by_link, by_name, poses, located, search))
+    joints = []
+    for joint in [j for j in CHAIN_JOINTS if j in states or j in gearhead_fixed]:
+        bearings = states.get(joint, [])
+        result = JointResult(joint, "", "", bearings)
+        fixed = [b for b in bearings if b.role == "fixed"]
+        one_way = [b for b in bearings if b.role == "one way"]
+        floating = [b for b in bearings if b.role == "floating"]
+        if joint in cross:
+            result.arrangement = "cross-located"
+            result.fixed = " + ".join(b.bearing for b in one_way)
+            if len(bearings) != 2 or len(one_way) != 2:
+                result.problems.append(f"{joint}: a cross-located pair needs two bearings each locating one way; "
+                                       + ", ".join(f"{b.bearing} is {b.role}" for b in bearings))
+            elif np.dot(np.array(one_way[0].axis) * (1 if one_way[0].stops_shaft == ["+axis"] else -1),
+                        np.array(one_way[1].axis) * (1 if one_way[1].stops_shaft == ["+axis"] else -1)) > 0:
+                result.problems.append(f"{joint}: {one_way[0].bearing} and {one_way[1].bearing} both locate the shaft "
+                                       f"the same way: nothing holds it the other way")
+        elif joint in gearhead_fixed:
+            result.arrangement = "gearhead + floating"
+            gear = _gearhead_on_axis(params, by_name, poses, joint, bearings[0]) if bearings else None
+            if bearings and gear is None:
+                result.problems.append(f"{joint}: the gearhead is listed as the fixed bearing "
+                                       f"(bearing_arrangement.gearhead_fixed) but {joint}_gearhead's axis is not the "
+                                       f"shaft's ({bearings[0].bearing})")
+            result.fixed = gear[0] if gear else f"{joint}_gearhead"
+            for b in fixed + one_way:
+                way = "both ways" if b.role == "fixed" else "one way"
+                result.problems.append(f"{joint}: {b.bearing} locates the shaft {way} besides {result.fixed}'s output "
+                                       f"bearings (the fixed bearing): they fight; it must float")
+            if gear:
+                for b in floating:
+                    result.problems += _check_floating(params, b, gear[1], seats[b.bearing], located)
+        else:
+            result.arrangement = "fixed + floating"
+            result.fixed = " + ".join(b.bearing for b in fixed)
+            if not fixed:
+                result.problems.append(f"{joint}: no bearing locates the shaft both ways (no fixed bearing): "
+                                       + ", ".join(f"{b.bearing} is {b.role}" for b in bearings))
+            elif len(fixed) > 1:
+                result.problems.append(f"{joint}: {len(fixed)} fixed bearings ({', '.join(b.bearing for b in fixed)}) "
+                                       f"locate the shaft: they fight as it grows; one must float")
+            for b in one_way:
+                way = _direction(np.array(b.axis) * (1 if b.stops_shaft == ["+axis"] else -1))
+                result.problems.append(f"{joint}: {b.bearing} locates the shaft one way (towards {way}) besides the "
+                                       f"fixed bearing: it must float")
+            if len(fixed) == 1:
+                for b in floating:
+                    result.problems += _check_floating(params, b, np.array(fixed[0].centre), seats[b.bearing], located)
+        joints.append(result)
+    return Report(located, search, joints, problems)
+
+
+def _side_text(side: Side, search: float) -> str:
+    return f"free over {search:g} mm" if side.gap is None else f"{side.gap:.2f} mm to {side.stop}"
+
+
+def format_report(report: Report) -> str:
+    lines = [f"bearing arrangement: one fixed and one floating bearing per shaft (a ring is located by a stop within "
+             f"{report.located_within:g} mm; rooms measured along each bearing's axis, up to {report.search:g} mm)"]
+    for j in report.joints:
+        lines.append(f"{j.joint}: {j.arrangement}; fixed: {j.fixed or 'none'}" + ("  FAIL" if j.problems else ""))
+        for b in j.bearings:
+            axis = np.array(b.axis)
+            extra = f", {b.span:g} mm from the fixed bearing, needs {b.required:.2f} mm each way" \
+                if b.required is not None else ""
+            stops = f", stops the shaft towards " + " and ".join(
+                _direction(axis if s == "+axis" else -axis) for s in b.stops_shaft) if b.stops_shaft else ""
+            lines.append(f"  {b.bearing} ({b.key}): {b.role}{stops}{extra}")
+            for r in (b.inner, b.outer):
+                fit = f"{r.tolerance}, {'slides' if r.slides else 'tight'} (mean {'clearance' if r.mean_clearance > 0 else 'interference'} " \
+                      f"{abs(r.mean_clearance) * 1000:.1f} um)"
+                lines.append(f"    {r.ring} ring on {r.seat}, {fit}: towards {_direction(-axis)} "
+                             f"{_side_text(r.minus, report.search)}; towards {_direction(axis)} {_side_text(r.plus, report.search)}")
+        for p in j.problems:
+            lines.append(f"  PROBLEM {p}")
+    for p in report.problems:
+        lines.append(f"PROBLEM {p}")
+    return "\n".join(lines)
+
+
+def dumps(report: Report) -> str:
+    return json.dumps({"ok": report.ok, "located_within_mm": report.located_within, "search_mm": report.search,
+                       "joints": [asdict(j) for j in report.joints], "problems": report.failures}, indent=1)
+
+
+def enforce(report: Report) -> None:
+    if not report.ok:
+        raise BearingArrangementError("bearing arrangement check failed: " + "; ".join(report.failures))

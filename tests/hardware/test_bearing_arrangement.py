@@ -1,0 +1,163 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""One fixed and one floating bearing per shaft, measured in the CAD (robogene_head/bearing_arrangement.py): the
+present design passes (pitch and roll float their 61800s against the gearheads' output bearings, the tilt has its
+fixed and its floating 626, yaw its cross-located pair); the check fails, naming the joint and the bearing, on a 61800
+clamped again in its housing, a floating ring with no room, both 626 fixed, a tilt without a fixed bearing, a gearhead
+off the shaft's axis and a floating ring with a tight fit."""
+import json
+
+import numpy as np
+import pytest
+
+from robogene_head import bearing_arrangement as arrangement
+from robogene_head import geom, kinematics
+from robogene_head.parts import eyes, head_frame, joint_encoders, neck, purchased
+from robogene_head.parts.base import Part, loc
+
+from param_variants import edited
+
+
+def _parts(params):
+    return neck.build(params) + head_frame.build(params) + eyes.build(params) + joint_encoders.build(params)
+
+
+@pytest.fixture(scope="module")
+def parts(params):
+    return _parts(params)
+
+
+@pytest.fixture(scope="module")
+def report(params, parts):
+    return arrangement.analyse(params, parts)
+
+
+def _joint(report, name):
+    return next(j for j in report.joints if j.joint == name)
+
+
+def _bearing(report, name):
+    return next(b for j in report.joints for b in j.bearings if b.bearing == name)
+
+
+def test_the_design_has_one_fixed_and_one_floating_bearing_per_shaft(report):
+    assert report.ok, arrangement.format_report(report)
+    assert [(j.joint, j.arrangement, j.fixed) for j in report.joints] == [
+        ("neck_pitch", "gearhead + floating", "neck_pitch_gearhead"),
+        ("neck_roll", "gearhead + floating", "neck_roll_gearhead"),
+        ("neck_yaw", "cross-located", "neck_yaw_bearing_lower + neck_yaw_bearing_upper"),
+        ("eyes_tilt", "fixed + floating", "eyes_tilt_bearing_right")]
+
+
+@pytest.mark.parametrize("name, seat", [("neck_pitch_bearing_right", "neck_upright_right"),
+                                        ("neck_roll_bearing_front", "neck_pitch_front_lug")])
+def test_the_61800s_float_on_their_outer_rings(report, name, seat):
+    """Inner ring tight (k6) against the journal's collar; outer ring sliding (H7) with no stop within reach of the
+    room it needs on either side."""
+    b = _bearing(report, name)
+    assert b.role == "floating" and b.stops_shaft == []
+    assert b.inner.tolerance == "k6" and not b.inner.slides
+    assert [s.gap for s in (b.inner.minus, b.inner.plus)].count(0.0) == 1
+    assert b.outer.seat == seat and b.outer.tolerance == "H7" and b.outer.slides
+    for side in (b.outer.minus, b.outer.plus):
+        assert side.gap is None or side.gap >= b.required
+    # room each way: aluminium growth over the span at 20 K plus ISO 2768-m on the span (30..120 mm: 0.3)
+    assert b.required == pytest.approx(23.1e-6 * 20 * b.span + 0.3, abs=1e-3)
+
+
+def test_the_tilt_has_a_fixed_and_a_floating_626(report):
+    right, left = _bearing(report, "eyes_tilt_bearing_right"), _bearing(report, "eyes_tilt_bearing_left")
+    assert right.role == "fixed" and sorted(right.stops_shaft) == ["+axis", "-axis"]
+    assert {right.inner.minus.stop, right.inner.plus.stop} == {"eyes_tilt_frame", "eyes_tilt_clip"}
+    # the shim between the outer ring and the DIN 472 ring is looked through: the ring is the stop
+    assert {right.outer.minus.stop, right.outer.plus.stop} == {"head_side_plate_right", "eyes_tilt_bearing_ring"}
+    assert left.role == "floating" and left.outer.minus.gap is None and left.outer.plus.gap is None
+
+
+def test_yaw_is_cross_located(report):
+    lower, upper = _bearing(report, "neck_yaw_bearing_lower"), _bearing(report, "neck_yaw_bearing_upper")
+    assert lower.role == upper.role == "one way"
+    assert lower.outer.tolerance == "M7" and not lower.outer.slides and lower.inner.slides
+
+
+def _at(params, bearing: Part, name: str, shape, z: float, link: str | None = None) -> Part:
+    """A stop in the bearing's own frame (its axis z, its faces at 0 and its width), on `link` (its own by default)."""
+    link = link or bearing.link
+    poses = kinematics.link_poses(params, {})
+    to_link = np.linalg.inv(poses[link]) @ poses[bearing.link]
+    return Part(name, name, link, "machined", shape, geom.location(to_link) * bearing.placement * loc(z=z),
+                material="aluminium-6082")
+
+
+def _ring(outside, bore, thickness):
+    return geom.tube("z", outside, bore, 0, thickness)
+
+
+def _analyse(params, parts, extra=(), drop=()):
+    return arrangement.analyse(params, [p for p in parts if p.name not in drop] + list(extra))
+
+
+def test_a_61800_clamped_again_fails(params, parts):
+    """The old seat: a shoulder inside the outer ring and a DIN 472 ring outside it."""
+    b = next(p for p in parts if p.name == "neck_pitch_bearing_right")
+    w = params.purchased(b.design).num("width")
+    shoulder = _at(params, b, "old_shoulder", _ring(19, 15, 1), -1)
+    ring = purchased.retaining_ring(params, "old_ring", "din472-19x1", b.link, b.placement * loc(z=w))
+    report = _analyse(params, parts, [shoulder, ring])
+    assert not report.ok
+    assert report.failures == ["neck_pitch: neck_pitch_bearing_right locates the shaft one way besides "
+                               "neck_pitch_gearhead's output bearings (the fixed bearing): they fight; it must float"]
+    with pytest.raises(arrangement.BearingArrangementError, match="neck_pitch: neck_pitch_bearing_right locates"):
+        arrangement.enforce(report)
+
+
+def test_a_floating_ring_without_room_fails(params, parts):
+    b = next(p for p in parts if p.name == "neck_roll_bearing_front")
+    w = params.purchased(b.design).num("width")
+    report = _analyse(params, parts, [_at(params, b, "cover", _ring(19, 15, 1), w + 0.1)])
+    [failure] = report.failures
+    assert failure.startswith("neck_roll: neck_roll_bearing_front must float, but its outer ring (H7, the sliding one) "
+                              "has 0.10 mm of room towards +x to cover: it needs 0.33 mm")
+
+
+def test_a_tilt_with_both_626_fixed_fails(params, parts):
+    """The left 626 held like the right one: its outer ring between two stops in the plate, its inner ring between the
+    collar and a clip."""
+    b = next(p for p in parts if p.name == "eyes_tilt_bearing_left")
+    w = params.purchased(b.design).num("width")
+    report = _analyse(params, parts, [_at(params, b, "stop_in", _ring(19, 15, 1), -1), _at(params, b, "stop_out", _ring(19, 15, 1), w),
+                                      _at(params, b, "clip", _ring(11, 5, 0.7), w, "eyes_tilt_link")])
+    assert _bearing(report, "eyes_tilt_bearing_left").role == "fixed"
+    assert report.failures == ["eyes_tilt: 2 fixed bearings (eyes_tilt_bearing_left, eyes_tilt_bearing_right) locate "
+                               "the shaft: they fight as it grows; one must float"]
+
+
+def test_a_tilt_without_a_fixed_bearing_fails(params, parts):
+    report = _analyse(params, parts, drop={"eyes_tilt_clip"})
+    assert report.failures[0] == ("eyes_tilt: no bearing locates the shaft both ways (no fixed bearing): "
+                                  "eyes_tilt_bearing_left is floating, eyes_tilt_bearing_right is one way")
+
+
+def test_a_gearhead_off_the_shafts_axis_is_no_fixed_bearing(params, parts):
+    gear = next(p for p in parts if p.name == "neck_pitch_gearhead")
+    moved = Part(gear.name, gear.design, gear.link, gear.kind, gear.local, loc(x=1) * gear.placement, mass=gear.mass)
+    report = _analyse(params, parts, [moved], drop={"neck_pitch_gearhead"})
+    assert report.failures == ["neck_pitch: the gearhead is listed as the fixed bearing (bearing_arrangement."
+                               "gearhead_fixed) but neck_pitch_gearhead's axis is not the shaft's (neck_pitch_bearing_right)"]
+
+
+def test_a_floating_ring_with_a_tight_fit_fails(tmp_path):
+    params = edited(tmp_path, lambda d: d["fits"].update(housing_standing_ring="M7"))
+    report = arrangement.analyse(params, _parts(params))
+    assert "neck_pitch: neck_pitch_bearing_right floats on its outer ring, but that ring's fit M7 holds it (mean " \
+           "interference 6.0 um): a floating ring needs a sliding fit" in report.failures
+
+
+def test_the_package_reports_the_arrangement(fab):
+    data = json.loads((fab / "reports" / "bearing-arrangement.json").read_text())
+    assert data["ok"] and data["problems"] == []
+    assert {j["joint"]: j["arrangement"] for j in data["joints"]} == {
+        "neck_pitch": "gearhead + floating", "neck_roll": "gearhead + floating", "neck_yaw": "cross-located",
+        "eyes_tilt": "fixed + floating"}
+    text = (fab / "reports" / "bearing-arrangement.txt").read_text()
+    assert "neck_pitch_bearing_right (skf-61800-2RS): floating" in text
