@@ -4,18 +4,12 @@
 the 61800's inner ring, which turns while the ring stands still. The seat refuses a design without the shim, with a
 shim too thin to hold them off, or with one whose bore rubs the inner ring."""
 import pytest
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head_model.params import ParameterError
 from robogene_head.parts import neck
+from robogene_head.geom import distance
 
 from param_variants import edited
-
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
 
 
 @pytest.fixture(scope="module")
@@ -29,9 +23,9 @@ def test_the_ring_stands_off_the_bearing_on_the_shim(params, neck_parts, bearing
     stem = bearing.rsplit("_", 1)[0]
     ring, shim = neck_parts[f"{stem}_ring"], neck_parts[f"{stem}_spacer"]
     thickness = params.purchased(neck.spacer(params)).num("thickness")
-    assert _distance(ring, neck_parts[bearing]) == pytest.approx(thickness)
+    assert distance(ring, neck_parts[bearing]) == pytest.approx(thickness)
     assert thickness >= neck.LUG_GAP
-    assert _distance(ring, shim) < 1e-6 and _distance(shim, neck_parts[bearing]) < 1e-6
+    assert distance(ring, shim) < 1e-6 and distance(shim, neck_parts[bearing]) < 1e-6
     for part in (ring, shim):
         assert part.intersect(neck_parts[host]).Volume() < 1e-3
 
