@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -45,6 +46,19 @@ TEST(HeadConfig, TheGeneratedHeadIniDescribesSixJointsOnThreeBoards) {
   EXPECT_FALSE(head.board(head.joints[0].board)->coupling);
 }
 
+TEST(HeadConfig, BrakesAreReadPerJointAndOptional) {
+  const HeadConfig head = testing::head_config();
+  std::vector<bool> braked;
+  for (const auto& j : head.joints) braked.push_back(j.has_brake);
+  EXPECT_EQ(braked, (std::vector<bool>{true, true, false, false, false, false})) << "pitch and roll carry brakes";
+  std::string text = head_ini_text();
+  const auto at = text.find("\nbrake ");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at + 1, text.find('\n', at + 1) - at);
+  const HeadConfig without = read_head_config(dev::Property::from_ini(text, "head.ini"));
+  for (const auto& j : without.joints) EXPECT_FALSE(j.has_brake) << j.name << ": a config without brake has none";
+}
+
 TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
   struct Case {
     const char* line;
@@ -61,6 +75,9 @@ TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
            Case{"m2j", "m2j (0.5 0.5) (1 1)", "[COUPLING_3] key 'm2j': is not the inverse of j2m"},
            Case{"board_addresses", "board_addresses 1 2 2", "address 2 is used by two boards"},
            Case{"kp ", "kp 170 170 66 35 130 99999", "[PIDS] key 'kp': value 6 (99999) is outside"},
+           Case{"brake ", "brake 1 2 0 0 0 0", "[GENERAL] key 'brake': value 2 (2) is outside [0, 1]"},
+           Case{"brake ", "brake 1 1 0 0 1 0",
+                "[GENERAL] key 'brake': joint eyes_version has a brake, but board 3 couples its motors"},
        }) {
     const std::string what = error_for(c.line, c.replacement);
     EXPECT_NE(what.find(c.expected), std::string::npos) << c.replacement << " -> " << what;
