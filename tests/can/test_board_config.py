@@ -483,8 +483,9 @@ def test_board_config_needs_its_parameter_file(tree):
 
 # ---- holding brakes: the firmware's has_brake from drives.<joint>.brake ------------------------
 
-def test_the_compiled_table_marks_the_braked_axes(build_dir, params):
-    """has_brake is 1 exactly on the axes whose motor carries a brake in the parameter file (pitch and roll)."""
+def test_the_compiled_table_marks_the_braked_axes(build_dir, params, ini):
+    """has_brake is 1 exactly on the axes whose motor carries a brake in the parameter file (pitch and roll), and the
+    driver config's [GENERAL] brake, which the board simulator reads, says the same."""
     program = build_dir / "print_brakes.c"
     program.write_text("""
 #include <stdio.h>
@@ -505,6 +506,7 @@ int main(void) {
     braked = {j for j, d in params["drives"].items() if d.get("brake")}
     assert braked == {"neck_pitch", "neck_roll"}
     assert table == {j: int(j in braked) for j in table}
+    assert dict(zip(ini["GENERAL"]["axis_names"], ini["GENERAL"]["brake"])) == {j: table[j] for j in ini["GENERAL"]["axis_names"]}
 
 
 def test_a_brake_travels_to_the_firmware_table(tree):

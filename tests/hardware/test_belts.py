@@ -8,6 +8,7 @@ import pytest
 import yaml
 
 from robogene_head.checks import interference
+from robogene_head.geom import distance
 from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import build_all, mounts
 
@@ -22,7 +23,7 @@ def test_each_belt_wraps_both_its_pulleys_at_every_angle(params, assembly, joint
         placed = {p.part.name: p.shape for p in assembly.pose({joint: angle}) if p.part.name in names}
         belt = placed[names[0]]
         for pulley in names[1:]:
-            assert interference._distance(belt, placed[pulley]) < fit, (angle, pulley)
+            assert distance(belt, placed[pulley]) < fit, (angle, pulley)
             assert belt.intersect(placed[pulley]).Volume() < interference.VOLUME_TOLERANCE, (angle, pulley)
 
 

@@ -14,6 +14,8 @@ from robogene_head import urdf
 from robogene_head_model import drive_limits
 from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
 
+from param_variants import edited, edited_file
+
 BELTS = {"neck_yaw": "yaw", "eyes_tilt": "tilt"}
 
 
@@ -42,14 +44,6 @@ def urdf_limits(text: str) -> dict[str, tuple[float, float]]:
             for j in root.findall("joint")}
 
 
-def _copy(tmp_path, edit) -> str:
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    edit(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data))
-    return path
-
-
 def test_package_urdf_limits_follow_the_drives(fab):
     expected = expected_limits(yaml.safe_load(DEFAULT_PATH.read_text()))
     got = urdf_limits((fab / "urdf" / "robogene_head.urdf").read_text())
@@ -65,7 +59,7 @@ def test_a_weaker_motor_lowers_its_joints_effort(params, tmp_path):
 
     def halve(data):
         data["purchased"][motor]["continuous_torque_mNm"] /= 2
-    after = urdf_limits(urdf.generate(load(_copy(tmp_path, halve)), {}))
+    after = urdf_limits(urdf.generate(edited(tmp_path, halve), {}))
     # half of 70 mN m is below what the board's current limit allows: the motor's rating sets the effort now
     data = yaml.safe_load(DEFAULT_PATH.read_text())
     assert after["neck_pitch"][0] == pytest.approx(data["purchased"][motor]["continuous_torque_mNm"] / 2e3 * 66 * 0.70,
@@ -87,7 +81,7 @@ def test_the_board_current_limit_caps_the_effort(params, tmp_path):
     def edit(data):
         data["motor_control"]["joints"]["neck_pitch"]["current_limit"] = pitch.current_limit_mA / 2
         data["motor_control"]["joints"]["eyes_vergence"]["current_limit"] = 150
-    limits = drive_limits.limits(load(_copy(tmp_path, edit)))
+    limits = drive_limits.limits(edited(tmp_path, edit))
     assert limits["neck_pitch"].effort == pytest.approx(pitch.effort / 2, rel=1e-9)
     assert limits["left_eye_pan"].current_limit_mA == limits["right_eye_pan"].current_limit_mA == 150
     assert limits["left_eye_pan"].limited_by == "current limit"
@@ -98,7 +92,7 @@ def test_the_gearhead_rating_caps_the_torque_before_the_belt(tmp_path):
     torque on its own shaft, which the belt then multiplies."""
     def derate(data):
         data["purchased"]["faulhaber-16-7-43"]["continuous_torque_Nm"] = 0.02
-    limits = drive_limits.limits(load(_copy(tmp_path, derate)))
+    limits = drive_limits.limits(edited(tmp_path, derate))
     assert (limits["left_eye_pan"].effort, limits["left_eye_pan"].limited_by) == (pytest.approx(0.02), "gearhead")
     assert (limits["eyes_tilt"].effort, limits["eyes_tilt"].limited_by) == (pytest.approx(0.02 * 32 / 14), "gearhead")
 
@@ -128,6 +122,6 @@ def test_bad_drive_data_is_named(tmp_path, part, field, value, message):
             del data["purchased"][part][field]
         else:
             data["purchased"][part][field] = value
-    path = _copy(tmp_path, edit)
+    path = edited_file(tmp_path, edit)
     with pytest.raises(ParameterError, match=f"^{path}: purchased\\.{part}\\.{message}$"):
         urdf.generate(load(path), {})

@@ -6,21 +6,15 @@ shaft, a hub whose bore is that shaft, a head with the declared flats and height
 pocket; and hubs that cannot be built are refused by name."""
 import pytest
 import yaml
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import geom
 from robogene_head.parts import eye_hubs, eyes
+from robogene_head.geom import distance
 from robogene_head_model.params import ParameterError
 
 from param_variants import edited
 
 PANS = (("left", "left_eye_pan"), ("right", "right_eye_pan"))
-
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
 
 
 def _entries(params, joint):
@@ -45,9 +39,9 @@ def test_the_set_screws_the_data_rates_bear_on_the_gearhead_shaft(params, placed
         p = placed[name]
         assert p.part.design == screws["screw"]
         # the point touches the shaft and does not cut into it; the screw sits in the hub's tapped hole
-        assert _distance(p.shape, shaft) < 0.01
+        assert distance(p.shape, shaft) < 0.01
         assert p.shape.intersect(shaft).Volume() < 1e-3
-        assert _distance(p.shape, hub) < 0.01 and p.shape.intersect(hub).Volume() < 1e-3
+        assert distance(p.shape, hub) < 0.01 and p.shape.intersect(hub).Volume() < 1e-3
 
 
 @pytest.mark.timeout(900)
@@ -57,7 +51,7 @@ def test_the_hub_is_the_flats_the_data_rates(params, placed, side, joint):
     hub = placed[f"{side}_eye_hub"].shape
     shaft = placed[f"{joint}_gearhead"].shape
     # the bore is the shaft: they touch all round without overlapping
-    assert _distance(hub, shaft) < 0.01 and hub.intersect(shaft).Volume() < 1e-3
+    assert distance(hub, shaft) < 0.01 and hub.intersect(shaft).Volume() < 1e-3
     # the head: everything of the hub above the shaft's end, measured on its exact box in the eye's frame
     local = placed[f"{side}_eye_hub"].part.local
     lo, hi = geom.exact_bounds(local)
@@ -71,7 +65,7 @@ def test_the_hub_is_the_flats_the_data_rates(params, placed, side, joint):
     assert flat["flats"] == 2
     # the cup's pocket holds the head's flats: touching, not overlapping
     cup = placed[f"{side}_eye_cup"].shape
-    assert _distance(hub, cup) < 0.01 and hub.intersect(cup).Volume() < 1e-3
+    assert distance(hub, cup) < 0.01 and hub.intersect(cup).Volume() < 1e-3
 
 
 @pytest.mark.parametrize("hub, where", [

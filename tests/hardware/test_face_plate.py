@@ -13,6 +13,7 @@ import trimesh
 from robogene_head import mesh_solid, massprops, openscad
 from robogene_head.assembly import Assembly
 from robogene_head.checks import interference
+from robogene_head.geom import distance
 
 TETRA_V = [[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 10]]
 TETRA_F = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
@@ -46,7 +47,7 @@ def test_face_plate_screws_go_through_its_holes_into_the_side_plates(params, ass
     for screw in screws:
         side = _part(assembly, "head_side_plate_left" if "left" in screw.name else "head_side_plate_right")
         # seated in the tapped hole (touching its wall), through the plate's 3.4 mm hole (not touching it)
-        assert interference._distance(screw.shape, side.shape) < 1e-6
+        assert distance(screw.shape, side.shape) < 1e-6
         assert screw.shape.intersect(side.shape).Volume() < interference.VOLUME_TOLERANCE
         # the head bears on the plate's front face; the shank passes its hole with 0.2 mm to spare
         shank = screw.shape.intersect(_part(assembly, "face_plate").shape)

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from robogene_head.checks import interference
+from robogene_head.geom import distance
 
 
 def _kind(params, part):
@@ -44,7 +45,7 @@ def held(params, assembly, external):
         for other in assembly.parts:
             if other is screw or other.link != screw.link or not _near(screw, other):
                 continue
-            if interference._distance(screw.shape, other.shape) < contact(other):
+            if distance(screw.shape, other.shape) < contact(other):
                 overlap = screw.shape.intersect(other.shape).Volume()
                 assert overlap < interference.VOLUME_TOLERANCE, f"{screw.name} cuts into {other.name}: {overlap:.2f} mm^3"
                 touched.append(other.name)
@@ -136,14 +137,14 @@ def test_every_board_is_clamped_at_its_four_holes(params, assembly, external):
         z = board.placement.toTuple()[0][2]
         below, above = [], []
         for part in stack:
-            if _near(board, part) and interference._distance(board.shape, part.shape) < contact(board):
+            if _near(board, part) and distance(board.shape, part.shape) < contact(board):
                 assert board.shape.intersect(part.shape).Volume() < interference.VOLUME_TOLERANCE, part.name
                 (below if part.placement.toTuple()[0][2] < z else above).append(part)
         assert len(below) == 4 and len(above) == 4, (board.name, [p.name for p in below], [p.name for p in above])
         assert bottom < z
         centres = {tuple(np.round(p.placement.toTuple()[0][:2], 3)) for p in below + above}
         assert len(centres) == 4, (board.name, centres)
-    on_flange = [p for p in stack if interference._distance(flange.shape, p.shape) < contact(flange)]
+    on_flange = [p for p in stack if distance(flange.shape, p.shape) < contact(flange)]
     assert sorted(p.name for p in on_flange) == [f"board_standoff_0_{i}" for i in range(4)]
     for part in on_flange:
         assert flange.shape.intersect(part.shape).Volume() < interference.VOLUME_TOLERANCE, part.name

@@ -17,20 +17,13 @@ from robogene_head_model import params as params_mod
 from robogene_head.harness import build as harness_build, drawing, pinout, plan, spans, spec
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck
 
+from param_variants import edited
+
 
 @pytest.fixture(scope="module")
 def parts(params):
     """The parts the harness reaches (drives, encoders, cameras): no board STEP needed."""
     return neck.build(params) + head_frame.build(params) + eyes.build(params) + joint_encoders.build(params)
-
-
-def _variant(params, tmp_path, change):
-    """The parameter file with `change(data)` applied, loaded."""
-    data = yaml.safe_load(params.path.read_text())
-    change(data)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return params_mod.load(path)
 
 
 def _frame(at, d, up):
@@ -77,7 +70,7 @@ def test_the_heads_routes_pass(params, parts):
 def test_a_cable_over_its_bend_radius_fails_the_check(params, parts, tmp_path):
     def thicker(data):
         data["harness"]["classes"]["motor-22awg"]["wire_od"] = 2.5   # R 25 > the neck loops' tightest bends
-    h = plan.plan(_variant(params, tmp_path, thicker), spec.load(_variant(params, tmp_path, thicker)), parts)
+    h = plan.plan(edited(tmp_path, thicker), spec.load(edited(tmp_path, thicker)), parts)
     assert not h.ok
     assert any("motor-22awg x2 bends to R" in p and "its minimum is R 25.0 mm" in p for p in h.problems), h.problems
 
@@ -85,7 +78,7 @@ def test_a_cable_over_its_bend_radius_fails_the_check(params, parts, tmp_path):
 def test_a_twisted_group_is_held_to_its_group_diameter(params, parts, tmp_path):
     def twisted(data):
         data["harness"]["classes"]["motor-22awg"]["laid"] = "twisted"   # pair od 2.8 mm: R 28
-    p2 = _variant(params, tmp_path, twisted)
+    p2 = edited(tmp_path, twisted)
     h = plan.plan(p2, spec.load(p2), parts)
     assert any("motor-22awg x2" in p and "R 28.0 mm (10 x 2.80 mm)" in p for p in h.problems), h.problems
 
@@ -93,7 +86,7 @@ def test_a_twisted_group_is_held_to_its_group_diameter(params, parts, tmp_path):
 def test_a_twist_over_its_limit_fails_the_check(params, parts, tmp_path):
     def stiff(data):
         data["harness"]["classes"]["signal-28awg"]["twist_deg_per_m"] = 100   # yaw twists the neck loop ~190 deg/m
-    p2 = _variant(params, tmp_path, stiff)
+    p2 = edited(tmp_path, stiff)
     h = plan.plan(p2, spec.load(p2), parts)
     assert any("span bay_exit -> head_entry" in p and "signal-28awg twists" in p and "limit is 100 deg/m" in p
                for p in h.problems), h.problems
@@ -105,7 +98,7 @@ def test_a_flat_cable_bent_in_its_own_plane_fails(params, parts, tmp_path):
             data["harness"]["clamps"][side]["up"] = [0, 0, 1]
         for side in ("pan_feed_l", "pan_feed_r"):
             data["harness"]["clamps"][side]["up"] = [0, 0, 1]
-    p2 = _variant(params, tmp_path, turned)
+    p2 = edited(tmp_path, turned)
     h = plan.plan(p2, spec.load(p2), parts)
     assert any("camera-ffc bends in its own plane" in p for p in h.problems), h.problems
 
@@ -133,7 +126,7 @@ def test_free_lengths_come_from_the_sweep(params, parts, tmp_path):
         for i, j in enumerate(("neck_pitch", "neck_roll", "neck_yaw")):
             data["joints"][j]["min"], data["joints"][j]["max"] = -0.5, 0.5
             data["control_joints"][i]["min"], data["control_joints"][i]["max"] = -0.5, 0.5
-    p2 = _variant(params, tmp_path, narrow)
+    p2 = edited(tmp_path, narrow)
     h2 = plan.plan(p2, spec.load(p2), parts)
     assert h2.spans[("bay_exit", "head_entry")].max_chord < neck_span.max_chord - 4
     cut = {c.name: c.length for c in h.cables}
@@ -156,18 +149,18 @@ def test_bad_harness_entries_are_named(params, parts, tmp_path):
     def unknown_clamp(data):
         data["harness"]["cables"][3]["via"] = ["bay_exit", "nowhere"]
     with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[3\]\.via: 'nowhere' is not a clamp"):
-        spec.load(_variant(params, tmp_path, unknown_clamp))
+        spec.load(edited(tmp_path, unknown_clamp))
 
     def no_route(data):
         data["harness"]["cables"][3]["via"] = ["bay_exit"]   # roll motor: its part is on the pitch stage
-    p2 = _variant(params, tmp_path, no_route)
+    p2 = edited(tmp_path, no_route)
     with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[3\] \(roll-motor\): the route ends on "
                                                          r"neck_base but its far end is on neck_pitch_link"):
         plan.plan(p2, spec.load(p2), parts)
 
     def no_connector(data):
         data["harness"]["cables"][0]["from"] = ["neck-pitch-roll", "J99"]
-    p3 = _variant(params, tmp_path, no_connector)
+    p3 = edited(tmp_path, no_connector)
     with pytest.raises(params_mod.ParameterError, match=r"harness\.cables\[0\] \(pitch-motor\)\.from: the board has "
                                                          r"no connector J99"):
         plan.plan(p3, spec.load(p3), parts)
@@ -183,7 +176,7 @@ def test_camera_cable_lengths_are_keyed_by_catalog_part(params, tmp_path):
         data["harness"]["camera_cables"]["lengths"] = {200: "rpi-camera-cable-200"}
     with pytest.raises(params_mod.ParameterError, match=r"harness\.camera_cables\.lengths: expected a mapping of "
                                                          r"catalog keys to their positive lengths \(mm\)"):
-        spec.load(_variant(params, tmp_path, number_keys))
+        spec.load(edited(tmp_path, number_keys))
 
 
 def test_wireviz_draws_every_cable(params, parts, tmp_path):
@@ -209,7 +202,7 @@ def test_the_build_stops_on_a_violation(params, parts, tmp_path):
 
     def thicker(data):
         data["harness"]["classes"]["signal-28awg"]["bend_factor"] = 40
-    p2 = _variant(params, tmp_path, thicker)
+    p2 = edited(tmp_path, thicker)
     with pytest.raises(harness_build.HarnessError, match=r"(?s)harness check failed.*signal-28awg x\d bends to R"):
         harness_build.build(p2, parts, tmp_path / "fab", Cache(tmp_path / "state.json"), catalog.load(),
                             Progress(open("/dev/null", "w")))
@@ -278,7 +271,7 @@ def test_every_brake_has_its_cable(params, parts):
 def test_a_brake_without_its_cable_fails(params, parts, tmp_path):
     def drop_roll_brake(data):
         data["harness"]["cables"] = [c for c in data["harness"]["cables"] if c["name"] != "roll-brake"]
-    broken = _variant(params, tmp_path, drop_roll_brake)
+    broken = edited(tmp_path, drop_roll_brake)
     h = plan.plan(broken, spec.load(broken), parts)
     assert any(p.startswith("neck_roll: its brake spec-brake-23-12V-8mNm has no cable") for p in h.problems), h.problems
 
@@ -288,7 +281,7 @@ def test_a_brake_cable_from_the_wrong_header_fails(params, parts, tmp_path):
         for c in data["harness"]["cables"]:
             if c["name"] == "roll-brake":
                 c["from"] = ["neck-pitch-roll", "J23"]
-    broken = _variant(params, tmp_path, swap)
+    broken = edited(tmp_path, swap)
     h = plan.plan(broken, spec.load(broken), parts)
     assert any("roll-brake: neck_roll_brake needs neck-pitch-roll's header with +12V, M2_BRAKE_N" in p
                for p in h.problems), h.problems

@@ -4,23 +4,16 @@
 its joint's shaft, the IC on the magnet's axis, measured in the CAD (checks/joint_encoders.py) over the joint's range;
 a bracket too far or too near and a board whose IC is off its holes' centre fail, naming the joint."""
 import pytest
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head_model.params import ParameterError
 from robogene_head import kinematics
 from robogene_head.checks import joint_encoders as check
-from robogene_head.geom import location
+from robogene_head.geom import distance, location
 from robogene_head.parts import joint_encoders, neck, tilt_bearings, yaw_bearings
 
 from param_variants import edited
 
 JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt")
-
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
 
 
 def _encoders(tmp_path, edit):
@@ -102,7 +95,7 @@ def test_the_yaw_magnets_pocket_stays_clear_of_the_upper_rings_groove(params):
                     for n in ("neck_yaw_encoder_magnet", "neck_yaw_ring_upper"))
     m, r = magnet.BoundingBox(), ring.BoundingBox()
     assert m.zmin < r.zmax and r.zmin < m.zmax                     # side by side along the shaft
-    assert _distance(magnet, ring) > 1.0
+    assert distance(magnet, ring) > 1.0
 
 
 @pytest.mark.parametrize("joint, feet, words", [
@@ -128,10 +121,10 @@ def test_magnets_sit_in_their_pockets_and_brackets_on_their_faces(params, assemb
     for joint in JOINTS:
         magnet, carrier = parts[f"{joint}_encoder_magnet"].shape, parts[carriers[joint]].shape
         assert magnet.intersect(carrier).Volume() < 1e-6
-        assert _distance(magnet, carrier) < 1e-6
+        assert distance(magnet, carrier) < 1e-6
         bracket, face = parts[f"{joint}_encoder_bracket"].shape, parts[faces[joint]].shape
         assert bracket.intersect(face).Volume() < 1e-6
-        assert _distance(bracket, face) < 1e-6
+        assert distance(bracket, face) < 1e-6
         end = joint_encoders.ends(params)[joint]
         turning = [p for p in assembly.parts if p.link == end.shaft]
         j = params.joints[joint]
@@ -141,7 +134,7 @@ def test_magnets_sit_in_their_pockets_and_brackets_on_their_faces(params, assemb
             near = [p for p in turning if p.name in (carriers[joint], f"{joint}_encoder_magnet")]
             for a in fixed:
                 for b in near:
-                    d = _distance(a.shape.moved(location(poses[a.link])), b.shape.moved(location(poses[b.link])))
+                    d = distance(a.shape.moved(location(poses[a.link])), b.shape.moved(location(poses[b.link])))
                     assert d >= minimum - 1e-6, (joint, angle, a.name, b.name, d)
 
 

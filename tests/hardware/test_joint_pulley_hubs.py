@@ -15,6 +15,7 @@ from robogene_head import sequence, torque_path
 from robogene_head.assembly import Assembly
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head.checks import interference
+from robogene_head.geom import distance
 from robogene_head.parts import eyes, mounts, neck
 from robogene_head_model.params import ParameterError, parse
 
@@ -66,9 +67,9 @@ def mismatches(params, joint) -> list[str]:
     axis = np.array([matrix.Value(i, 3) for i in (1, 2, 3)])
     flats = [f for f in shaft.shape.Faces() if f.geomType() == "PLANE"]
     for s in screws:
-        if interference._distance(s.shape, shaft.shape) > fit:
+        if distance(s.shape, shaft.shape) > fit:
             problems.append(f"{s.name} does not reach the shaft")
-        elif not any(interference._distance(s.shape, f) <= fit for f in flats):
+        elif not any(distance(s.shape, f) <= fit for f in flats):
             problems.append(f"{s.name} does not bear on a flat")
         if s.shape.intersect(shaft.shape).Volume() > interference.VOLUME_TOLERANCE:
             problems.append(f"{s.name} cuts into the shaft")

@@ -4,20 +4,13 @@
 shim and DIN 472 ring) and on the journal (collar and DIN 6799 clip), the left one against its journal's collar with
 its outer ring free to slide in the left plate's through-bore; the seat refuses what would rub or has no room."""
 import pytest
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import bearing_loads, geom, kinematics, massprops
-from robogene_head.geom import location
+from robogene_head.geom import distance, location
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck, tilt_bearings
 from robogene_head_model.params import ParameterError
 
 from param_variants import edited
-
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
 
 
 @pytest.fixture(scope="module")
@@ -32,14 +25,14 @@ def test_the_fixed_bearing_is_held_both_ways(params, world):
     bearing, plate, frame = world["eyes_tilt_bearing_right"], world["head_side_plate_right"], world["eyes_tilt_frame"]
     ring, shim, clip = world["eyes_tilt_bearing_ring"], world["eyes_tilt_bearing_spacer"], world["eyes_tilt_clip"]
     # outer ring: against the plate's shoulder inside, the shim and the DIN 472 ring outside
-    assert _distance(bearing, plate) < 1e-6 and bearing.intersect(plate).Volume() < 1e-3
+    assert distance(bearing, plate) < 1e-6 and bearing.intersect(plate).Volume() < 1e-3
     thickness = params.purchased(params.geometry("tilt_bearings").text("spacer")).num("thickness")
-    assert _distance(ring, bearing) == pytest.approx(thickness)
-    assert _distance(shim, bearing) < 1e-6 and _distance(ring, shim) < 1e-6
+    assert distance(ring, bearing) == pytest.approx(thickness)
+    assert distance(shim, bearing) < 1e-6 and distance(ring, shim) < 1e-6
     assert ring.intersect(plate).Volume() < 1e-3
     # inner ring: against the journal's collar inside, the clip outside, the clip in its groove
-    assert _distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
-    assert _distance(clip, bearing) < 1e-6 and clip.intersect(frame).Volume() < 1e-3
+    assert distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
+    assert distance(clip, bearing) < 1e-6 and clip.intersect(frame).Volume() < 1e-3
     lay = tilt_bearings.layout(params)
     bb = bearing.BoundingBox()
     assert bb.ymax == pytest.approx(lay.bearing)
@@ -54,13 +47,13 @@ def test_the_ring_lugs_stand_off_the_turning_inner_ring_and_clip(params, world):
     tx, _, tz = params.joints["eyes_tilt"].origin
     lugs = geom.tube("y", ring.num("groove_diameter"), ring.num("lug_inner_diameter"), bb.ymin, bb.ymax,
                      (tx, tz))
-    assert _distance(lugs, world["eyes_tilt_clip"]) >= neck.LUG_GAP - 1e-6
-    assert _distance(lugs, world["eyes_tilt_frame"]) > 0
+    assert distance(lugs, world["eyes_tilt_clip"]) >= neck.LUG_GAP - 1e-6
+    assert distance(lugs, world["eyes_tilt_frame"]) > 0
 
 
 def test_the_floating_bearing_sits_on_its_collar_and_slides_in_its_bore(params, world):
     bearing, plate, frame = world["eyes_tilt_bearing_left"], world["head_side_plate_left"], world["eyes_tilt_frame"]
-    assert _distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
+    assert distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
     # no shoulder either side: the plate has no material inside the outer ring's diameter near the bearing
     tx, _, tz = params.joints["eyes_tilt"].origin
     bb = bearing.BoundingBox()
@@ -82,15 +75,15 @@ def test_the_journal_carries_the_magnet_holder_beyond_the_clip_and_the_boss(para
     assert end == pytest.approx(-lay.outer - joint_encoders.shaft_protrusion(params))
     holder, plate = world["eyes_tilt_magnet_holder"], world["head_side_plate_right"]
     minimum = params.geometry("clearances").num("minimum")
-    assert _distance(holder, plate) >= minimum - 1e-6
-    assert _distance(holder, world["eyes_tilt_bearing_ring"]) >= minimum - 1e-6
-    assert _distance(holder, world["eyes_tilt_clip"]) > 0
+    assert distance(holder, plate) >= minimum - 1e-6
+    assert distance(holder, world["eyes_tilt_bearing_ring"]) >= minimum - 1e-6
+    assert distance(holder, world["eyes_tilt_clip"]) > 0
     assert holder.BoundingBox().ymax < -lay.outer                  # wholly outside the boss
     bracket = world["eyes_tilt_encoder_bracket"]
     hw = params.geometry("head", "floor").num("half_width")
     assert bracket.BoundingBox().ymax == pytest.approx(-hw)        # on the plate's outer face
     boss = tilt_bearings.right_boss(params).moved(location(kinematics.link_poses(params, {})["head_frame"]))
-    assert _distance(bracket, boss) >= minimum - 1e-6
+    assert distance(bracket, boss) >= minimum - 1e-6
 
 
 @pytest.mark.parametrize("edit, message", [

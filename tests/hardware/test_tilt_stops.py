@@ -3,35 +3,16 @@
 """The eye tilt's hard stops against the geometry: the tilt frame's arm meets its pin exactly at each stop angle,
 is clear of it over the whole range, and stops angles inside the range or pins off the arm are refused."""
 import pytest
-import yaml
-from OCP.Bnd import Bnd_Box
-from OCP.BRepBndLib import BRepBndLib
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import ParameterError
 from robogene_head.parts import tilt_stops
+from robogene_head.geom import distance, exact_bounds
 
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
-
-
-def _y_range(shape) -> tuple[float, float]:
-    """The shape's exact extent along y (OpenCASCADE's optimal box, not the meshed one)."""
-    box = Bnd_Box()
-    BRepBndLib.AddOptimal_s(shape.wrapped, box, False, False)
-    x0, y0, z0, x1, y1, z1 = box.Get()
-    return y0, y1
+from param_variants import edited
 
 
 def _copy(tmp_path, **stop):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    data["geometry"]["eyes"]["tilt_stop"].update(stop)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
+    return edited(tmp_path, lambda d: d["geometry"]["eyes"]["tilt_stop"].update(stop))
 
 
 @pytest.mark.timeout(900)
@@ -46,13 +27,13 @@ def test_the_arm_strikes_its_pin_at_the_stop(params, assembly, side, plate):
         placed = {p.part.name: p.shape for p in assembly.pose(chain={"eyes_tilt": angle})}
         return placed["eyes_tilt_frame"], placed[pin]
     inward = -1 if stop > 0 else 1
-    assert _distance(*shapes(stop)) < 0.01
-    assert _distance(*shapes(stop + inward * 0.5)) > 0.05
+    assert distance(*shapes(stop)) < 0.01
+    assert distance(*shapes(stop + inward * 0.5)) > 0.05
     frame, p = shapes(stop - inward * 2)
     assert frame.intersect(p).Volume() > 0.1
     joint = params.joints["eyes_tilt"]
     limit = joint.upper if stop > 0 else joint.lower
-    assert _distance(*shapes(limit)) >= params.geometry("clearances").num("minimum")
+    assert distance(*shapes(limit)) >= params.geometry("clearances").num("minimum")
 
 
 def test_the_pins_stand_in_the_side_plates(params, assembly):
@@ -64,8 +45,8 @@ def test_the_pins_stand_in_the_side_plates(params, assembly):
             pin, side = parts[f"eyes_tilt_stop_pin_{plate}_{i}"], parts[f"head_side_plate_{plate}"]
             inside = pin.shape.intersect(side.shape).Volume()
             assert inside < 1e-3                      # the hole takes it: no overlap
-            (pin_y0, pin_y1), (plate_y0, plate_y1) = _y_range(pin.shape), _y_range(side.shape)
-            into = (pin_y1 - plate_y0) if plate == "left" else (plate_y1 - pin_y0)
+            (pin_lo, pin_hi), (plate_lo, plate_hi) = exact_bounds(pin.shape), exact_bounds(side.shape)
+            into = (pin_hi[1] - plate_lo[1]) if plate == "left" else (plate_hi[1] - pin_lo[1])
             assert into == pytest.approx(depth, abs=1e-6)
 
 

@@ -7,11 +7,10 @@ import json
 import math
 
 import pytest
-import yaml
 
 from robogene_head import torque_elements, torque_path
 from robogene_head_model import drive_limits
-from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head_model.params import ParameterError
 
 from param_variants import edited
 
@@ -24,12 +23,10 @@ SET_SCREWS = {
 
 
 def _variant(tmp_path, **paths):
-    data = yaml.safe_load(DEFAULT_PATH.read_text())
-    data["purchased"].update(SET_SCREWS)
-    data["torque_paths"].update(paths)
-    path = tmp_path / "head-parameters.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False))
-    return load(path)
+    def edit(data):
+        data["purchased"].update(SET_SCREWS)
+        data["torque_paths"].update(paths)
+    return edited(tmp_path, edit)
 
 
 def _joint(report, joint):

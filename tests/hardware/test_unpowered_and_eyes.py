@@ -7,12 +7,12 @@ import math
 
 import numpy as np
 import pytest
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import unpowered
 from robogene_head.massprops import MassProps
 from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import eye_stops
+from robogene_head.geom import distance
 
 from param_variants import edited_file
 
@@ -46,12 +46,6 @@ def test_the_package_reports_the_unpowered_head(fab):
     assert rows["neck_pitch"]["hold_Nm"] == pytest.approx(1.5 * sizing["neck_pitch"]["gravity_Nm"])
 
 
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
-
-
 @pytest.mark.timeout(900)
 @pytest.mark.parametrize("joint, side", [("left_eye_pan", 1), ("left_eye_pan", 0), ("right_eye_pan", 0)])
 def test_the_lug_strikes_its_pin_at_the_stop(params, assembly, joint, side):
@@ -65,12 +59,12 @@ def test_the_lug_strikes_its_pin_at_the_stop(params, assembly, joint, side):
         placed = {p.part.name: p.shape for p in assembly.pose(chain={joint: angle})}
         return placed[f"{eye}_eye_cup"], placed[pin]
     inward = -1 if stop > 0 else 1
-    assert _distance(*shapes(stop)) < 0.01
-    assert _distance(*shapes(stop + inward * 0.5)) > 0.05
+    assert distance(*shapes(stop)) < 0.01
+    assert distance(*shapes(stop + inward * 0.5)) > 0.05
     cup, p = shapes(stop - inward * 2)
     assert cup.intersect(p).Volume() > 0.1
     limit = params.joints[joint].upper if stop > 0 else params.joints[joint].lower
-    assert _distance(*shapes(limit)) >= params.geometry("clearances").num("minimum")
+    assert distance(*shapes(limit)) >= params.geometry("clearances").num("minimum")
 
 
 @pytest.mark.timeout(900)

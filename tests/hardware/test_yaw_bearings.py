@@ -10,22 +10,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head import bearing_loads, geom, kinematics, massprops, sequence
 from robogene_head.assembly import Assembly
 from robogene_head.checks import assembly_sequence as chk
-from robogene_head.geom import location
+from robogene_head.geom import distance, location
 from robogene_head.parts import head_frame, joint_encoders, neck, yaw_bearings
 from robogene_head_model.params import ParameterError
 
 from param_variants import edited
-
-
-def _distance(a, b) -> float:
-    d = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    d.Perform()
-    return d.Value()
 
 
 @pytest.fixture(scope="module")
@@ -45,7 +38,7 @@ def test_two_bearings_span_the_boss_and_sit_against_its_land(params, world):
     assert upper.Center().z - lower.Center().z == pytest.approx(params.geometry("yaw_bearings").num("span"))
     floor = world["head_floor"]
     for bearing in (lower, upper):
-        assert _distance(bearing, floor) < 1e-6                      # pressed in its seat
+        assert distance(bearing, floor) < 1e-6                      # pressed in its seat
         assert bearing.intersect(floor).Volume() < 1e-3
     # the land between them: the floor's material reaches inside the outer rings' diameter there
     zy = params.joints["neck_yaw"].origin[2] + params.joints["neck_pitch"].origin[2] + params.joints["neck_roll"].origin[2]
@@ -58,9 +51,9 @@ def test_two_bearings_span_the_boss_and_sit_against_its_land(params, world):
 def test_each_ring_stands_off_its_bearing_on_the_shim(params, world, which):
     ring, shim, bearing = (world[f"neck_yaw_{k}_{which}"] for k in ("ring", "shim", "bearing"))
     thickness = params.purchased(yaw_bearings.layout(params).shim).num("thickness")
-    assert _distance(ring, bearing) == pytest.approx(thickness)
+    assert distance(ring, bearing) == pytest.approx(thickness)
     assert thickness >= neck.LUG_GAP
-    assert _distance(ring, shim) < 1e-6 and _distance(shim, bearing) < 1e-6
+    assert distance(ring, shim) < 1e-6 and distance(shim, bearing) < 1e-6
     # the ring sits in its groove: it overlaps no part of the shaft
     assert ring.intersect(world["neck_roll_stage"]).Volume() < 1e-3
     assert shim.intersect(world["neck_roll_stage"]).Volume() < 1e-3
@@ -74,8 +67,8 @@ def test_the_lower_rings_lugs_clear_the_turning_floor(params, world):
     box = world["neck_yaw_ring_lower"].BoundingBox()
     lugs = geom.cyl("z", ring.num("lug_outer_diameter"), box.zmin, box.zmax, (box.center.x, box.center.y))
     gap = params.geometry("clearances").num("minimum")
-    assert _distance(lugs, world["head_floor"]) >= gap - 1e-6
-    assert _distance(lugs, world["neck_yaw_joint_pulley"]) > 0
+    assert distance(lugs, world["head_floor"]) >= gap - 1e-6
+    assert distance(lugs, world["neck_yaw_joint_pulley"]) > 0
 
 
 def test_the_sensor_faces_the_shaft_end(params, world):
@@ -90,7 +83,7 @@ def test_the_sensor_faces_the_shaft_end(params, world):
         end + params.geometry("joint_encoders").num("gap"))
     bracket = world["neck_yaw_encoder_bracket"]
     assert bracket.BoundingBox().zmin == pytest.approx(floor_top)
-    assert _distance(bracket, yaw_bearings.boss(params).moved(location(kinematics.link_poses(params, {})["head_frame"]))) \
+    assert distance(bracket, yaw_bearings.boss(params).moved(location(kinematics.link_poses(params, {})["head_frame"]))) \
         >= params.geometry("clearances").num("minimum") - 1e-6
 
 

@@ -181,6 +181,8 @@ HeadConfig read_head_config(const Searchable& config) {
   const auto encoder = general.numbers("encoder", count, 1e-6, 1e9);
   const auto gear = general.numbers("gear_ratio", count, 1e-6, 1e6);
   const auto lines = general.ints("motor_encoder_lines", count, 1, 1 << 20);
+  // brake is optional: a configuration without it has no holding brakes.
+  const auto brake = general.has("brake") ? general.ints("brake", count, 0, 1) : std::vector<int>(count, 0);
   head.pwm_full_scale = general.integer("pwm_full_scale", 1, 32767);
   head.control_period_us = general.integer("control_period_us", 100, 100000);
 
@@ -240,6 +242,7 @@ HeadConfig read_head_config(const Searchable& config) {
     jc.counts_per_degree = encoder[j];
     jc.gear_ratio = gear[j];
     jc.motor_encoder_lines = lines[j];
+    jc.has_brake = brake[j] != 0;
     jc.min = min[j];
     jc.max = max[j];
     if (jc.min >= jc.max) limits.fail("max", "joint " + jc.name + ": max " + Group::text(jc.max) + " is not above min " + Group::text(jc.min));
@@ -261,6 +264,15 @@ HeadConfig read_head_config(const Searchable& config) {
     head.joints.push_back(jc);
   }
   for (auto& b : head.boards) read_coupling(config, head, b);
+  for (const auto& b : head.boards) {
+    for (int j : b.joints) {
+      // A board's brake output follows one motor; on a coupled board each motor serves both axes.
+      if (j >= 0 && b.coupling && head.joints[static_cast<std::size_t>(j)].has_brake) {
+        general.fail("brake", "joint " + head.joints[static_cast<std::size_t>(j)].name + " has a brake, but board " +
+                                  std::to_string(b.address) + " couples its motors: a board drives brakes only on uncoupled axes");
+      }
+    }
+  }
   return head;
 }
 

@@ -19,6 +19,7 @@ void expect_same_axis(const rg_axis_params_t& sim, const rg_axis_params_t& fw, c
   EXPECT_EQ(sim.max_position, fw.max_position) << what;
   EXPECT_EQ(sim.max_speed, fw.max_speed) << what;
   EXPECT_EQ(sim.current_limit_ma, fw.current_limit_ma) << what;
+  EXPECT_EQ(sim.has_brake, fw.has_brake) << what;
   EXPECT_EQ(sim.pid.kp, fw.pid.kp) << what;
   EXPECT_EQ(sim.pid.ki, fw.pid.ki) << what;
   EXPECT_EQ(sim.pid.kd, fw.pid.kd) << what;

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -49,6 +50,19 @@ TEST(HeadConfig, TheGeneratedHeadIniDescribesSixJointsOnThreeBoards) {
   EXPECT_EQ(head.joints[0].homing.current, 0);
 }
 
+TEST(HeadConfig, BrakesAreReadPerJointAndOptional) {
+  const HeadConfig head = testing::head_config();
+  std::vector<bool> braked;
+  for (const auto& j : head.joints) braked.push_back(j.has_brake);
+  EXPECT_EQ(braked, (std::vector<bool>{true, true, false, false, false, false})) << "pitch and roll carry brakes";
+  std::string text = head_ini_text();
+  const auto at = text.find("\nbrake ");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at + 1, text.find('\n', at + 1) - at);
+  const HeadConfig without = read_head_config(dev::Property::from_ini(text, "head.ini"));
+  for (const auto& j : without.joints) EXPECT_FALSE(j.has_brake) << j.name << ": a config without brake has none";
+}
+
 TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
   struct Case {
     const char* line;
@@ -70,6 +84,9 @@ TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
            Case{"current 0 ", "current 0 0 0 0 601 0",
                 "[HOMING] key 'current': joint eyes_version homes with 601 mA, outside 1..its current limit (600 mA"},
            Case{"current 0 ", "current 0 0 0 0 100", "[HOMING] key 'current': expected 6 values"},
+           Case{"brake ", "brake 1 2 0 0 0 0", "[GENERAL] key 'brake': value 2 (2) is outside [0, 1]"},
+           Case{"brake ", "brake 1 1 0 0 1 0",
+                "[GENERAL] key 'brake': joint eyes_version has a brake, but board 3 couples its motors"},
        }) {
     const std::string what = error_for(c.line, c.replacement);
     EXPECT_NE(what.find(c.expected), std::string::npos) << c.replacement << " -> " << what;

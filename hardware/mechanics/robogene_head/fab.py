@@ -14,6 +14,7 @@ import os
 import subprocess
 import sys
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -42,6 +43,22 @@ DEFAULT_BOARD_STEP = REPO / "build" / "fab" / "electronics" / "board.step"   # m
 
 class BuildError(RuntimeError):
     pass
+
+
+@contextmanager
+def _fails_build(*errors: type[Exception]):
+    """One of errors, raised by a check's enforce or a step, stops the build with the error's own message."""
+    try:
+        yield
+    except errors as exc:
+        raise BuildError(str(exc)) from None
+
+
+def _write_report(out: Path, name: str, table: str, data: str) -> None:
+    """reports/<name>.txt (the table a reader reads) and reports/<name>.json (the same for tools), written before
+    the check's verdict so that the package holds them whether or not it passes."""
+    _write(out / "reports" / f"{name}.txt", table + "\n")
+    _write(out / "reports" / f"{name}.json", data)
 
 
 def _placement_key(part) -> list:
@@ -83,10 +100,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
         if not fresh:
             openscad.render_stl(scad, values, target)
             cache.record(f"scad:{scad.stem}", key)
-    try:
+    with _fails_build(BoardModelError, MeshSolidError):
         external = external_mod.load(Path(board_step).resolve(), out / "stl" / f"{external_mod.FACE_PLATE}.stl")
-    except (BoardModelError, MeshSolidError) as exc:
-        raise BuildError(str(exc)) from None
     assembly = Assembly(params, external=external)
     parts = assembly.parts
     progress.note(f"{len(parts)} parts from {params.path} and {external.board.path}")
@@ -100,8 +115,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # 1b. Each joint encoder's board at the AS5048A's air gap over its magnet, its IC on the magnet's axis, over the
     # joint's range (checks/joint_encoders.py): the table goes into the package whether or not it passes.
     encoders = joint_encoders.check(params, parts)
-    _write(out / "reports" / "joint-encoders.txt", joint_encoders.format_report(encoders) + "\n")
-    _write(out / "reports" / "joint-encoders.json", json.dumps(joint_encoders.report_json(encoders), indent=1))
+    _write_report(out, "joint-encoders", joint_encoders.format_report(encoders),
+                  json.dumps(joint_encoders.report_json(encoders), indent=1))
     if not encoders.ok:
         raise BuildError("joint-encoder check failed: " + "; ".join(encoders.failures) + ", see "
                          + str(out / "reports" / "joint-encoders.txt"))
@@ -141,10 +156,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     sys.path.insert(0, str(REPO / "hardware" / "bom"))
     from robogene_bom import catalog as catalog_mod
     from robogene_bom.catalog import CatalogError
-    try:
+    with _fails_build(harness_build.HarnessError, PinoutError, CatalogError, RuntimeError):
         harness_lines = harness_build.build(params, parts, out, cache, catalog_mod.load(), progress)
-    except (harness_build.HarnessError, PinoutError, CatalogError, RuntimeError) as exc:
-        raise BuildError(str(exc)) from None
     geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
                           [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
 
@@ -170,52 +183,39 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # 3b. Drives sized by a check (drive_sizing): the table goes into the package whether or not it passes.
     progress.note("drive sizing: worst case over the whole range")
     sizing = drive_sizing.size(params, props)
-    _write(out / "reports" / "drive-sizing.txt", drive_sizing.format_table(sizing) + "\n")
-    _write(out / "reports" / "drive-sizing.json", drive_sizing.dumps(sizing))
-    try:
+    _write_report(out, "drive-sizing", drive_sizing.format_table(sizing), drive_sizing.dumps(sizing))
+    with _fails_build(drive_sizing.SizingError):
         drive_sizing.enforce(sizing)
-    except drive_sizing.SizingError as exc:
-        raise BuildError(str(exc)) from None
     progress.note("drive sizing: every drive within its continuous ratings, smallest margin "
                   f"{min(j.margin for j in sizing.joints):.2f} ({drive_sizing.required_margin(params):g} required)")
     # What each joint does when the power goes, against its holding element: the table goes into the package whether
     # or not it passes, and the build fails where the head would fall (unpowered.enforce).
     released = unpowered.analyse(params, props, {j.joint: j.gravity_Nm for j in sizing.joints})
-    _write(out / "reports" / "unpowered.txt", unpowered.format_table(released) + "\n")
-    _write(out / "reports" / "unpowered.json", unpowered.dumps(released))
-    try:
+    _write_report(out, "unpowered", unpowered.format_table(released), unpowered.dumps(released))
+    with _fails_build(unpowered.UnpoweredError):
         unpowered.enforce(released)
-    except unpowered.UnpoweredError as exc:
-        raise BuildError(str(exc)) from None
     # The bearings against their static load rating: the table goes into the package whether or not it passes.
     loads = bearing_loads.analyse(params, parts, props)
-    _write(out / "reports" / "bearing-loads.txt", bearing_loads.format_table(loads) + "\n")
-    _write(out / "reports" / "bearing-loads.json", bearing_loads.dumps(loads))
-    try:
+    _write_report(out, "bearing-loads", bearing_loads.format_table(loads), bearing_loads.dumps(loads))
+    with _fails_build(bearing_loads.BearingLoadError):
         bearing_loads.enforce(loads)
-    except bearing_loads.BearingLoadError as exc:
-        raise BuildError(str(exc)) from None
     # One fixed and one floating bearing per shaft, measured in the CAD: the report goes into the package whether or
     # not it passes.
     arrangement = bearing_arrangement.analyse(params, parts)
-    _write(out / "reports" / "bearing-arrangement.txt", bearing_arrangement.format_report(arrangement) + "\n")
-    _write(out / "reports" / "bearing-arrangement.json", bearing_arrangement.dumps(arrangement))
-    try:
+    _write_report(out, "bearing-arrangement", bearing_arrangement.format_report(arrangement),
+                  bearing_arrangement.dumps(arrangement))
+    with _fails_build(bearing_arrangement.BearingArrangementError):
         bearing_arrangement.enforce(arrangement)
-    except bearing_arrangement.BearingArrangementError as exc:
-        raise BuildError(f"{exc}, see {out / 'reports' / 'bearing-arrangement.txt'}") from None
     # The eyes' error against the stereo budget, term by term, and each joint's torque path against its drive's peak
     # torque: reported, so that docs/fabricate.md states them from the package. Neither fails the build yet: the eye
     # pans' 16/7 spur gearheads miss the budget (eye_accuracy.enforce is the check, for when a drive meets it; see
     # docs/fabricate.md, "Eyes for stereo").
     eyes = eye_accuracy.budget(params, {j.joint: j.load_Nm for j in sizing.joints})
-    _write(out / "reports" / "eye-accuracy.txt", eye_accuracy.format_report(eyes) + "\n")
-    _write(out / "reports" / "eye-accuracy.json", eye_accuracy.dumps(eyes))
+    _write_report(out, "eye-accuracy", eye_accuracy.format_report(eyes), eye_accuracy.dumps(eyes))
     progress.note("eye accuracy: the pan drives " + ("meet" if eyes.ok else "do NOT meet") + " the stereo budget, "
                   "see " + str(out / "reports" / "eye-accuracy.txt"))
     torque = torque_path.analyse(params)
-    _write(out / "reports" / "torque-path.txt", torque_path.format_table(torque) + "\n")
-    _write(out / "reports" / "torque-path.json", torque_path.dumps(torque))
+    _write_report(out, "torque-path", torque_path.format_table(torque), torque_path.dumps(torque))
 
     # 4. Assembly STEP and GLB at the zero pose.
     asm_out = [out / "assembly" / "robogene_head.step", out / "assembly" / "robogene_head.glb"]
@@ -244,10 +244,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # 6b. The board bay with the harness plugged in: every mated plug and its wires clear of the boards above, the
     # standoffs and the plate (checks/board_bay.py). The plugs join the interference sweep below; they are the
     # harness's parts, counted in the BOM with it, not parts of the assembly.
-    try:
+    with _fails_build(PinoutError):
         plugs = board_plugs.build(params, external.board)
-    except PinoutError as exc:
-        raise BuildError(str(exc)) from None
     bay = board_bay.check(params, parts, plugs)
     _write(out / "reports" / "board-bay.txt", board_bay.format_report(bay) + "\n")
     if not bay.ok:
@@ -285,10 +283,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     check_key = digest(geometry_key, sorted(expected.items()), sorted(solids.items()), freecad.check_digest())
     if not cache.fresh("freecad-check", check_key, [check_report]):
         progress.note(f"FreeCAD: re-open {len(step_files)} STEP files")
-        try:
+        with _fails_build(RuntimeError, OSError, subprocess.TimeoutExpired):
             freecad.check_steps(step_files, expected, check_report, solids)
-        except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
-            raise BuildError(str(exc)) from None
         cache.record("freecad-check", check_key)
     fc_report = json.loads(check_report.read_text())
     bad_steps = [r for r in fc_report["files"] if not r["ok"]]
@@ -322,10 +318,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     from robogene_bom import build as bom_build
     from robogene_bom.board import BoardBomError
     progress.note("BOM")
-    try:
+    with _fails_build(CatalogError, BoardBomError):
         bom_build.write_package(params, parts, board_boms, out / "bom", batch=batch, extras=harness_lines)
-    except (CatalogError, BoardBomError) as exc:
-        raise BuildError(str(exc)) from None
 
     # 11. Summary and manifest with checksums.
     _write(out / "parts.json", json.dumps(summary, indent=1))
@@ -341,10 +335,8 @@ def _source_hash(module) -> str:
 def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, assembly, geometry_key: str,
                        sequence_path: Path | None = None) -> None:
     """Check the assembly sequence (BuildError naming the step and the parts on failure), then draw its steps."""
-    try:
+    with _fails_build(sequence.SequenceError):
         seq = sequence.load([p.name for p in assembly.parts], sequence_path)
-    except sequence.SequenceError as exc:
-        raise BuildError(str(exc)) from None
     reports = [out / "reports" / "assembly.txt", out / "reports" / "assembly.json"]
     key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(sequence),
                  _source_hash(fits), params.path.read_bytes())
@@ -389,11 +381,9 @@ def _draw_machined(out: Path, cache: Cache, progress: Progress, jobs: list) -> N
     done = len(jobs) - len(stale)
     if stale:
         progress.note(f"FreeCAD TechDraw: drawing {len(stale)} machined parts in one session")
-        try:
+        with _fails_build(RuntimeError, OSError):
             data = freecad.draw(stale, out / "drawings",
                                 on_progress=lambda i, n, line: progress.step("drawings", done + i, len(jobs), line))
-        except (RuntimeError, OSError) as exc:
-            raise BuildError(str(exc)) from None
         for d in data["drawings"]:
             report[d["name"]] = d
             cache.record(f"drawing:{d['name']}", keys[d["name"]])

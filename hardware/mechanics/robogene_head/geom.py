@@ -7,6 +7,7 @@ import cadquery as cq
 import numpy as np
 from OCP.Bnd import Bnd_Box
 from OCP.BRepBndLib import BRepBndLib
+from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 from OCP.gp import gp_Trsf
 
 AXES = {"x": cq.Vector(1, 0, 0), "y": cq.Vector(0, 1, 0), "z": cq.Vector(0, 0, 1)}
@@ -76,3 +77,12 @@ def exact_bounds(shape: cq.Shape) -> tuple[np.ndarray, np.ndarray]:
     BRepBndLib.AddOptimal_s(shape.wrapped, found, False, False)
     x0, y0, z0, x1, y1, z1 = found.Get()
     return np.array([x0, y0, z0]), np.array([x1, y1, z1])
+
+
+def distance(a: cq.Shape, b: cq.Shape) -> float:
+    """The exact least distance between two shapes (0 where they touch or overlap)."""
+    tool = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
+    tool.Perform()
+    if not tool.IsDone():
+        raise RuntimeError("BRepExtrema failed")
+    return tool.Value()

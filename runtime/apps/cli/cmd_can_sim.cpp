@@ -65,7 +65,12 @@ int cmd_can_sim(Args& args) {
     boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address) +
               (sim.in_bootloader(b.address) ? " (in its bootloader)" : "");
   }
-  std::printf("can-sim: %zu boards (%s) on %s%s\n", head.boards.size(), boards.c_str(), bus_spec->c_str(),
+  std::string brakes;
+  for (const auto& j : head.joints) {
+    if (j.has_brake) brakes += (brakes.empty() ? "" : ", ") + j.name;
+  }
+  std::printf("can-sim: %zu boards (%s) on %s; holding brakes: %s (each change logged at ROBOGENE_LOG=info)%s\n",
+              head.boards.size(), boards.c_str(), bus_spec->c_str(), brakes.empty() ? "none" : brakes.c_str(),
               seconds < 0 ? "; Ctrl-C stops" : "");
   std::fflush(stdout);
   wait_for_signal_or(seconds);

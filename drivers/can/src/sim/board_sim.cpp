@@ -24,6 +24,17 @@ struct BoardSim::Model {
   std::array<DcMotor, 2> motors;
   std::array<double, 2> motor_counts_per_degree{{1.0, 1.0}};
   std::array<double, 2> duty{{0.0, 0.0}};
+  // The bridges as the core last set them, and for how many whole periods each has been on.
+  std::array<bool, 2> bridge_on{{false, false}};
+  std::array<std::uint32_t, 2> bridge_periods{{0, 0}};
+  // The holding brakes: fitted to the motors whose axis has one (the configuration's brake), their
+  // gate output as the core last set it. A spring-applied brake releases only while its gate is
+  // released and the coil has supply; through reset and in the bootloader the gate's pull-down
+  // holds it applied.
+  std::array<bool, 2> brake_fitted{{false, false}};
+  std::array<bool, 2> brake_gate_released{{false, false}};
+  std::vector<BrakeChange> brake_changes;
+  std::uint64_t periods = 0;
   rg_board_params_t params{};  // kept for a simulated power-up
   double pwm_full_scale = 1.0;
   double supply_volts = 12.0;
@@ -65,6 +76,27 @@ bool bridge_fault(void* ctx) { return model_of(ctx).bridge_fault; }
 void set_pwm(void* ctx, unsigned m, std::int32_t duty, bool enabled) {
   Model& s = model_of(ctx);
   s.duty[m] = enabled ? duty / s.pwm_full_scale : 0.0;
+  s.bridge_on[m] = enabled;
+}
+
+// Brings the motor model's brake to what the gate, the supply and the running stage make it, and
+// notes a change with the bridge's state at that moment.
+void update_brake(Model& s, std::size_t m) {
+  if (!s.brake_fitted[m]) return;
+  const bool holding = !(s.brake_gate_released[m] && s.supply_volts > 0.0 && !s.in_bootloader);
+  if (holding == s.motors[m].braked()) return;
+  s.motors[m].set_braked(holding);
+  s.brake_changes.push_back(BrakeChange{s.periods, static_cast<int>(m), !holding, s.bridge_on[m], s.bridge_periods[m]});
+}
+
+void update_brakes(Model& s) {
+  for (std::size_t m = 0; m < 2; ++m) update_brake(s, m);
+}
+
+void set_brake(void* ctx, unsigned m, bool released) {
+  Model& s = model_of(ctx);
+  s.brake_gate_released[m] = released;
+  update_brake(s, m);
 }
 
 bool can_send(void* ctx, const rg_can_frame_t* f) {
@@ -110,6 +142,9 @@ bool flash_read(void* ctx, std::uint32_t offset, std::uint8_t* out, std::uint32_
 // The board's reset: the bootloader starts the application when the image checks, else stays.
 void reset(Model& s) {
   s.duty = {0.0, 0.0};
+  s.bridge_on = {false, false};
+  s.bridge_periods = {0, 0};
+  s.brake_gate_released = {false, false};
   s.pending = Model::Switch::none;
   s.in_bootloader = !rg_boot_image_valid(&s.boot_hal, &s.target);
   if (s.in_bootloader) {
@@ -117,6 +152,7 @@ void reset(Model& s) {
   } else {
     rg_board_init(&s.core, &s.params, &s.hal);
   }
+  update_brakes(s);
 }
 
 void settle(Model& s) {
@@ -124,7 +160,10 @@ void settle(Model& s) {
   s.pending = Model::Switch::none;
   if (what == Model::Switch::to_bootloader) {
     s.duty = {0.0, 0.0};
+    s.bridge_on = {false, false};
+    s.brake_gate_released = {false, false};
     s.in_bootloader = true;
+    update_brakes(s);
     rg_boot_init(&s.boot, s.params.address, &s.target, &s.boot_hal);
   } else if (what == Model::Switch::to_application) {
     reset(s);  // the firmware resets; its reset path checks the image again
@@ -154,10 +193,13 @@ BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const Motor
       }
     }
     s.motors[i] = DcMotor(mp);
+    // As the core: a brake output only where motor i drives axis i alone.
+    s.brake_fitted[i] = !board.coupling && p.axes[i].present && p.axes[i].has_brake;
+    s.motors[i].set_braked(s.brake_fitted[i]);
   }
   s.pwm_full_scale = head.pwm_full_scale;
   s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr, nullptr,
-                   enter_bootloader};
+                   enter_bootloader, set_brake};
   s.params = p;
   s.target = rg_image_target_t{ROBOGENE_CAN_BOARD_TYPE_ROBOGENE_MOTOR_BOARD, p.board_id,
                                static_cast<std::uint8_t>(board_revision())};
@@ -202,15 +244,29 @@ std::optional<Envelope> BoardSim::handle(const Envelope& command) {
 void BoardSim::step(double /*now*/, double dt, std::vector<Envelope>& out) {
   Model& s = *model_;
   s.sent.clear();
+  ++s.periods;
   if (!s.in_bootloader) rg_board_tick(&s.core);  // the bootloader leaves the bridges off
-  for (std::size_t m = 0; m < 2; ++m) s.motors[m].step(s.in_bootloader ? 0.0 : s.duty[m], dt);
+  for (std::size_t m = 0; m < 2; ++m) {
+    s.motors[m].step(s.in_bootloader ? 0.0 : s.duty[m], dt);
+    s.bridge_periods[m] = s.bridge_on[m] && !s.in_bootloader ? s.bridge_periods[m] + 1 : 0;
+  }
   for (const auto& f : s.sent) out.push_back(decode(from_core(f)));
 }
 
 double BoardSim::motor_degrees(int m) const { return model_->motors[static_cast<std::size_t>(m)].joint_degrees(); }
 std::int32_t BoardSim::measured_counts(int axis) const { return model_->core.axes[axis & 1].measured; }
 ControlMode BoardSim::mode(int axis) const { return static_cast<ControlMode>(model_->core.axes[axis & 1].mode); }
-void BoardSim::set_supply_voltage(double volts) { model_->supply_volts = volts; }
+void BoardSim::set_supply_voltage(double volts) {
+  model_->supply_volts = volts;
+  update_brakes(*model_);
+}
+bool BoardSim::has_brake(int m) const { return model_->brake_fitted[static_cast<std::size_t>(m & 1)]; }
+bool BoardSim::brake_holding(int m) const { return model_->motors[static_cast<std::size_t>(m & 1)].braked(); }
+std::vector<BrakeChange> BoardSim::take_brake_changes() {
+  std::vector<BrakeChange> out;
+  out.swap(model_->brake_changes);
+  return out;
+}
 void BoardSim::set_bridge_fault(bool asserted) { model_->bridge_fault = asserted; }
 
 }  // namespace robogene::can::sim

@@ -11,11 +11,18 @@ namespace {
 
 constexpr int kMaxCatchUpTicks = 50;  // past this the loop gives up on real time instead of spinning
 
+std::string describe(const BrakeChange& c) {
+  if (c.released) {
+    return "brake released, its bridge on for " + std::to_string(c.bridge_periods) + (c.bridge_periods == 1 ? " period" : " periods");
+  }
+  return std::string("brake applied, its bridge ") + (c.bridge_on ? "still on" : "off");
+}
+
 }  // namespace
 
 SimulatedHead::SimulatedHead(const HeadConfig& head, std::unique_ptr<Bus> bus, const MotorParameters& motor,
                              const std::string& flash_dir)
-    : bus_(std::move(bus)), period_s_(head.control_period_us / 1e6) {
+    : bus_(std::move(bus)), head_(head), period_s_(head.control_period_us / 1e6) {
   for (const auto& b : head.boards) {
     const std::string flash =
         flash_dir.empty() ? "" : flash_dir + "/board-" + std::to_string(b.address) + "-" + b.name + ".flash";
@@ -54,6 +61,28 @@ std::int32_t SimulatedHead::measured_counts(int address, int axis) {
 void SimulatedHead::power_up_at(int address, double motor0_degrees, double motor1_degrees) {
   std::lock_guard<std::mutex> lock(mutex_);
   board(address).power_up_at(motor0_degrees, motor1_degrees);
+}
+
+bool SimulatedHead::has_brake(int address, int motor) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).has_brake(motor);
+}
+
+bool SimulatedHead::brake_holding(int address, int motor) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).brake_holding(motor);
+}
+
+// Each brake change as a log line (info) naming the board and the joint, so a user of `robogene
+// can-sim` sees the brakes work (ROBOGENE_LOG=info).
+void SimulatedHead::log_brake_changes(BoardSim& b) {
+  for (const BrakeChange& c : b.take_brake_changes()) {
+    const BoardConfig* config = head_.board(b.address());
+    const int joint = config ? config->joints[static_cast<std::size_t>(c.motor & 1)] : -1;
+    const std::string who = "simulated board " + std::to_string(b.address()) + (config ? " (" + config->name + ")" : "") +
+                            (joint >= 0 ? " " + head_.joints[static_cast<std::size_t>(joint)].name : "");
+    log::info(bus_->name(), who + ": " + describe(c));
+  }
 }
 
 bool SimulatedHead::in_bootloader(int address) {
@@ -97,6 +126,7 @@ void SimulatedHead::take_commands() {
     for (auto& b : boards_) {
       if (e.destination != b.address() && e.destination != kBroadcastAddress) continue;
       if (auto reply = b.handle(e)) send(*reply);
+      log_brake_changes(b);
     }
   }
 }
@@ -115,7 +145,10 @@ void SimulatedHead::loop() {
       {
         std::lock_guard<std::mutex> lock(mutex_);
         const double t = static_cast<double>(ticks_ + 1) * period_s_;
-        for (auto& b : boards_) b.step(t, period_s_, out);
+        for (auto& b : boards_) {
+          b.step(t, period_s_, out);
+          log_brake_changes(b);
+        }
       }
       ++ticks_;
       for (const auto& e : out) send(e);

@@ -10,10 +10,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head_model.params import HeadParameters
 
+from .. import geom
 from ..parts.board_plugs import Plug, loose_box
 
 VOLUME_TOLERANCE = 0.5   # mm^3, as the interference check
@@ -42,14 +42,6 @@ class Report:
         return not self.failures
 
 
-def _distance(a, b) -> float:
-    tool = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-    tool.Perform()
-    if not tool.IsDone():
-        raise RuntimeError("BRepExtrema failed")
-    return tool.Value()
-
-
 def check(params: HeadParameters, parts, plugs: list[Plug]) -> Report:
     minimum = params.geometry("clearances").num("minimum", positive=True)
     reach = minimum + 5.0
@@ -75,7 +67,7 @@ def check(params: HeadParameters, parts, plugs: list[Plug]) -> Report:
                 if np.all(np.minimum(hi, ohi) - np.maximum(lo, olo) > 0):
                     overlap += shape.intersect(other).Volume()
                 continue
-            d = _distance(shape, other)
+            d = geom.distance(shape, other)
             if d <= reach and (best is None or d < best[0]):
                 best = (d, name)
         rows.append(Row(plug, best[1] if best else "", best[0] if best else None, overlap))

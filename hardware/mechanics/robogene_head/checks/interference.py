@@ -20,11 +20,10 @@ from dataclasses import dataclass, field
 
 import fcl
 import numpy as np
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from robogene_head_model.params import CONTROL_JOINTS, HeadParameters
 
-from .. import kinematics
+from .. import geom
 from ..assembly import Assembly, Placed
 
 VOLUME_TOLERANCE = 0.5   # mm^3: below this a common volume is boolean noise on touching faces
@@ -130,14 +129,6 @@ def _mesh_distance(o1, o2) -> float:
     return fcl.distance(o1, o2, fcl.DistanceRequest(), fcl.DistanceResult())
 
 
-def _distance(s1, s2) -> float:
-    tool = BRepExtrema_DistShapeShape(s1.wrapped, s2.wrapped)
-    tool.Perform()
-    if not tool.IsDone():
-        raise RuntimeError("BRepExtrema failed")
-    return tool.Value()
-
-
 def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
           static_checked_elsewhere: frozenset[str] = frozenset()) -> Report:
     """static_checked_elsewhere: parts whose pairs within their own link another check has measured (the mated plugs:
@@ -196,7 +187,7 @@ def _pair(pa: Placed, pb: Placed, oa, ob, fit_tol: float, exact_below: float):
         return None, 0.0
     if mesh_dist > max(fit_tol + 2 * MESH_DEFLECTION, exact_below):
         return mesh_dist, 0.0     # certainly apart: the mesh distance is the clearance to +-0.1 mm
-    dist = _distance(pa.shape, pb.shape)
+    dist = geom.distance(pa.shape, pb.shape)
     overlap = pa.shape.intersect(pb.shape).Volume() if dist < fit_tol else 0.0
     return dist, overlap
 

@@ -44,6 +44,7 @@ struct JointConfig {
   double min = 0, max = 0;        // degrees
   double max_velocity = 0;        // deg/s
   double current_limit = 0;       // mA
+  bool has_brake = false;         // its motor has a power-off holding brake on the board's brake output
   PidGains pid;
   HomingConfig homing;
 };

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +20,17 @@
 #include "robogene/can/sim/dc_motor.hpp"
 
 namespace robogene::can::sim {
+
+// A holding brake that applied or released, with the state of its motor's bridge at that moment: the
+// order the firmware keeps (released only once the bridge has held for a period, applied while the
+// bridge is still on) is visible here.
+struct BrakeChange {
+  std::uint64_t period = 0;         // control periods stepped before the change
+  int motor = 0;
+  bool released = false;            // false: applied
+  bool bridge_on = false;           // the bridge was driving the motor
+  std::uint32_t bridge_periods = 0; // whole periods it had been on
+};
 
 class BoardSim {
  public:
@@ -51,6 +63,14 @@ class BoardSim {
   // as a board without absolute encoders does until it homes.
   void power_up_at(double motor0_degrees, double motor1_degrees);
   void set_bridge_fault(bool asserted);
+  // The power-off holding brake of motor m: whether the motor has one (its axis's brake in the
+  // configuration, on an uncoupled board), and whether it holds the motor now. It holds from
+  // power-up, while the firmware keeps its gate applied, in the bootloader and without supply; a
+  // motor it holds does not turn, whatever its bridge drives. take_brake_changes returns the changes
+  // since the last call, oldest first.
+  bool has_brake(int m) const;
+  bool brake_holding(int m) const;
+  std::vector<BrakeChange> take_brake_changes();
   // The bootloader runs (after enter_bootloader, or at power-up without a valid image).
   bool in_bootloader() const;
   // A power cycle: the reset path of the bootloader decides what runs.

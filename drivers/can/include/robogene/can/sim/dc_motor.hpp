@@ -5,8 +5,10 @@
 // (L/R, tens of microseconds) is far below the 1 ms control period, so current follows voltage
 // at once: i = (V - ke w) / R, cut at the bridge's own overcurrent limit (the board's firmware
 // limits it lower, per axis). The mechanics integrate J dw/dt = kt i - b w in sub-steps; a joint
-// with hard stops is held at them (an inelastic stop). Defaults: a 12 V Faulhaber 2342-class
-// motor (R 1.9 ohm, kt 13.4 mNm/A, rotor 5.6 g cm^2) and a load of 5e-3 kg m^2 at the joint.
+// with hard stops is held at them (an inelastic stop). A holding brake, while applied, stops and
+// locks the motor's shaft: an ideal brake, it holds whatever the bridge drives (the current then
+// flows as at stall). Defaults: a 12 V Faulhaber 2342-class motor (R 1.9 ohm, kt 13.4 mNm/A,
+// rotor 5.6 g cm^2) and a load of 5e-3 kg m^2 at the joint.
 #pragma once
 
 #include <algorithm>
@@ -41,6 +43,7 @@ class DcMotor {
       const double volts = duty * p_.supply_voltage;
       current_ = std::clamp((volts - p_.torque_constant * speed_) / p_.resistance, -p_.bridge_current_limit,
                             p_.bridge_current_limit);
+      if (braked_) continue;
       const double torque = p_.torque_constant * current_ - p_.viscous_friction * speed_;
       speed_ += torque / inertia * h;
       angle_ += speed_ * h;
@@ -52,6 +55,12 @@ class DcMotor {
   double joint_degrees_per_second() const { return speed_ / p_.gear_ratio * 180.0 / M_PI; }
   double current_amps() const { return current_; }
   void set_joint_degrees(double deg) { angle_ = deg * M_PI / 180.0 * p_.gear_ratio; }
+  // Applies (true) or releases (false) the holding brake; a motor without one is never braked.
+  void set_braked(bool braked) {
+    braked_ = braked;
+    if (braked_) speed_ = 0.0;
+  }
+  bool braked() const { return braked_; }
   const MotorParameters& parameters() const { return p_; }
 
  private:
@@ -67,6 +76,7 @@ class DcMotor {
   double angle_ = 0.0;  // rad at the motor
   double speed_ = 0.0;  // rad/s at the motor
   double current_ = 0.0;
+  bool braked_ = false;
 };
 
 }  // namespace robogene::can::sim

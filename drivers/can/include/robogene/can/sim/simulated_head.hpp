@@ -40,6 +40,10 @@ class SimulatedHead {
   // Whether a board runs its bootloader, and a power cycle of it (BoardSim::power_cycle).
   bool in_bootloader(int board);
   void power_cycle(int board);
+  // Whether a board's motor m has a holding brake, and whether it holds now (BoardSim::brake_holding).
+  // Each change is logged at info level, naming the board and the joint.
+  bool has_brake(int board, int motor);
+  bool brake_holding(int board, int motor);
   // Control periods run so far, and how many frames were not commands the boards understood.
   std::uint64_t ticks() const { return ticks_; }
   std::uint64_t rejected_frames() const { return rejected_; }
@@ -48,9 +52,11 @@ class SimulatedHead {
   void loop();
   void take_commands();
   void send(const Envelope& e);
+  void log_brake_changes(BoardSim& b);
   BoardSim& board(int address);
 
   std::unique_ptr<Bus> bus_;
+  HeadConfig head_;
   double period_s_;
   std::mutex mutex_;
   std::vector<BoardSim> boards_;
