@@ -174,7 +174,9 @@ def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
         if "housing" not in seats or "journal" not in seats:
             continue
         # the ring on the part nearer the base stands still relative to the load
-        inner_turns = _depth(params, seats["housing"].link) < _depth(params, seats["journal"].link)
+        # (or the journal is a shaft that turns in its own link's housing, against a load standing in it)
+        inner_turns = (_depth(params, seats["housing"].link) < _depth(params, seats["journal"].link)
+                       or seats["journal"].turning)
         for role, part in seats.items():
             turns = inner_turns if role == "journal" else not inner_turns
             tol = tolerance(params, role, turns)
