@@ -121,6 +121,20 @@ def test_a_screw_the_driver_cannot_reach_is_caught(params, tmp_path):
                     report.problems[0].what)
 
 
+def test_a_bearing_pressed_onto_a_shaft_is_pressed_by_its_inner_ring(params):
+    """The jackshaft's bearings are pressed on their inner rings: a sleeve round the shaft reaches them, where an
+    arbor on the outer ring, the way a bearing goes into a housing, would have to pass through the shaft."""
+    parts = {q.name: q for q in head_frame.build(params)}
+    chosen = [parts["eyes_tilt_jackshaft"], parts["eyes_tilt_jackshaft_bearing_fixed"]]
+    shaft = {"name": "shaft", "parts": ["eyes_tilt_jackshaft"], "fixture": True}
+    press = {"name": "bearing", "parts": ["eyes_tilt_jackshaft_bearing_fixed"], "from": [[0, 40, 0]],
+             "fits": ["eyes_tilt_jackshaft"], "press": {"onto": "eyes_tilt_jackshaft"}}
+    assert _check(params, chosen, [shaft, press]).ok
+    report = _check(params, chosen, [shaft, dict(press, press=True)])
+    assert re.match(r"press arbor for eyes_tilt_jackshaft_bearing_fixed: .* hits eyes_tilt_jackshaft",
+                    report.problems[0].what)
+
+
 def test_a_contact_that_is_not_a_declared_fit_is_caught(params, neck_parts):
     parts = [neck_parts[n] for n in ("neck_pitch_front_lug", "neck_roll_bearing_front")]
     steps = copy.deepcopy(FRONT_LUG)

@@ -43,6 +43,7 @@ class Step:
     fasteners: list[str] = field(default_factory=list)   # screws put in after the parts are in place
     driver: str | None = None     # the fasteners' driver, when not the catalogue default
     press: bool = False           # a bearing pressed in: straight along its axis, with an arbor behind it
+    press_onto: str = ""          # ... pressed by its inner ring onto this shaft: the arbor a sleeve round it
     flexible: str = ""            # placed by hand, not swept (belts, circlips): why
     access: tuple[str, np.ndarray] | None = None   # flexible part: a tool (driver name) along this axis
     straddles: list[str] = field(default_factory=list)   # parts the tool goes round (an external ring's shaft)
@@ -208,10 +209,15 @@ def _step(raw, where: str, context: str, number: int, names: list[str], drivers:
         access = (a["driver"], along / np.linalg.norm(along))
     straddles = _names(raw["access"].get("straddles", []), f"{where}.access.straddles", names) \
         if access and raw["access"].get("straddles") else []
+    press, onto = raw.get("press", False), ""
+    if isinstance(press, dict):
+        if set(press) != {"onto"}:
+            raise SequenceError(f"{where}.press: expected true or {{onto: <the shaft its inner ring goes on>}}")
+        (onto,) = _names([press["onto"]], f"{where}.press.onto", names)
     step = Step(context, number, name, parts, path,
                 fits=_names(raw.get("fits", []), f"{where}.fits", names) if raw.get("fits") else [],
                 fasteners=_names(raw.get("fasteners", []), f"{where}.fasteners", names) if raw.get("fasteners") else [],
-                driver=driver, press=bool(raw.get("press", False)), flexible=flexible, access=access, straddles=straddles,
+                driver=driver, press=bool(press), press_onto=onto, flexible=flexible, access=access, straddles=straddles,
                 fixture=fixture, subassembly=sub, why=str(raw.get("why", "")))
     if step.press and (len(step.parts) != 1 or len(step.path) != 2):
         raise SequenceError(f"{where}.press: a pressed step moves one bearing along one straight line")

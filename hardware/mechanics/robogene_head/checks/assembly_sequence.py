@@ -19,7 +19,8 @@ overlap is not measured; the fastener tests check the stack's studs and screws i
 Screws. Each screw goes in along its axis: a cylinder of its head's diameter (a set screw's own, from its socket) from the head outwards, and the
 driver's blade and then its handle beyond the blade's length, must be clear of everything in place until they
 leave the bounding box of the assembly so far. Pressed bearings: the path is one straight move along the
-bearing's axis and an arbor (the outer ring's diameter less 1 mm) behind it must be clear likewise. Flexible
+bearing's axis and an arbor (the outer ring's diameter less 1 mm; pressed onto a shaft by its inner ring, a sleeve
+round the shaft as wide as the inner ring's face) behind it must be clear likewise. Flexible
 parts (belts, circlips) are placed by hand, not swept; a circlip's pliers get the same access check (an external
 ring's pliers go round the shaft it sits on, which the step names under access.straddles).
 """
@@ -269,7 +270,7 @@ class _Checker:
         if np.isfinite(closest):
             result.closest, result.closest_to = round(float(closest), 3), closest_to
 
-    def press(self, step: Step, placed: list[str], result: StepResult) -> None:
+    def press(self, step: Step, placed: list[str], result: StepResult, params) -> None:
         bearing = step.parts[0]
         frame = self.w.frames[bearing]
         axis = frame[:3, 2]
@@ -281,8 +282,13 @@ class _Checker:
         centre = (bb[0] + bb[1]) / 2
         back = centre - travel * _half_extent(bb, travel)   # the bearing's trailing face
         diameter = _diameter_across(bb, travel) - 1.0
+        exclude = {bearing}
+        if step.press_onto:
+            # pressed by its inner ring onto a shaft: a sleeve round the shaft, as wide as the inner ring's face
+            diameter = params.purchased(self.w.placed[bearing].part.design).num("inner_ring_outside", positive=True)
+            exclude.add(step.press_onto)
         self._tool(step, placed, result, f"press arbor for {bearing}", back, -travel, diameter, np.inf, diameter,
-                   exclude={bearing})
+                   exclude=exclude)
 
     def fasteners(self, step: Step, placed: list[str], result: StepResult, params) -> None:
         done = list(placed)
@@ -412,7 +418,7 @@ def check(params, assembly: Assembly, sequence: Sequence, progress=None) -> Repo
         elif step.parts:
             checker.sweep(step, here, result)
             if step.press and not result.problems:
-                checker.press(step, here, result)
+                checker.press(step, here, result, params)
         else:
             result.note = "screws only: each one's driver checked along its axis"
         here.extend(step.parts)
