@@ -61,13 +61,22 @@ def engagement(pulley, gearhead):
     return engaged, s1 - s0
 
 
-@pytest.mark.parametrize("joint", ["neck_yaw", "eyes_tilt"])
-def test_motor_pulley_holds_most_of_the_shaft(assembly, params, joint):
+def test_motor_pulley_holds_most_of_the_shaft(assembly, params):
+    joint = "neck_yaw"
     placed = {p.part.name: p.shape for p in assembly.pose({})}
     engaged, shaft = engagement(placed[f"{joint}_motor_pulley"], placed[f"{joint}_gearhead"])
     expected = params.purchased(params.drive(joint).text("gearhead")).num("shaft_length")
     assert shaft == pytest.approx(expected)
     assert engaged >= MIN_ENGAGEMENT * shaft, f"{joint}: the pulley holds {engaged:.2f} of {shaft:g} mm of shaft"
+
+
+def test_the_tilt_motor_pulley_sits_on_the_jackshaft_over_its_whole_bore(assembly, params):
+    """The tilt's catalogue pulley is on its jackshaft (parts/tilt_jackshaft.py): its whole 20 mm bore (14.3 over the
+    flanges and the 5.7 mm hub) holds the shaft, less the two 0.5 mm flats under its set screws (about 0.45 mm of the
+    shaft's section-length)."""
+    placed = {p.part.name: p.shape for p in assembly.pose({})}
+    engaged, _ = engagement(placed["eyes_tilt_motor_pulley"], placed["eyes_tilt_jackshaft"])
+    assert 20 - 0.6 < engaged < 20
 
 
 def test_a_hub_gap_that_leaves_no_hub_is_named(params, external, tmp_path):
