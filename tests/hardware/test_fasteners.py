@@ -119,10 +119,10 @@ def test_a_screw_too_long_for_the_gearhead_threads_is_named(params, external, tm
     from robogene_head_model.params import ParameterError, load
     from robogene_head.parts import build_all
     data = yaml.safe_load(params.path.read_text())
-    data["purchased"]["iso4762-M2x8"]["length"] = 12
+    data["purchased"]["iso4762-M2x6"]["length"] = 12
     path = tmp_path / "long-screws.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ParameterError, match=r"purchased\.iso4762-M2x8: reaches 8.2 mm into eyes_tilt's gearhead"):
+    with pytest.raises(ParameterError, match=r"purchased\.iso4762-M2x6: reaches 10.2 mm into neck_pitch's gearhead"):
         build_all(load(path), external)
 
 
