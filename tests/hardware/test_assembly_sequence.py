@@ -22,6 +22,8 @@ from robogene_head_model.params import parse
 from robogene_head.parts import eyes, head_frame, neck
 from robogene_head.progress import Progress
 
+from param_variants import edited
+
 
 def test_package_check_passed_and_drew_every_step(fab, params):
     report = json.loads((fab / "reports" / "assembly.json").read_text())
@@ -100,20 +102,38 @@ def test_a_pitch_stage_wider_than_the_uprights_gap_is_caught(params):
     assert re.match(r"neck_pitch_stage (touches|collides with) neck_upright_left", report.problems[0].what)
 
 
-def test_a_screw_the_driver_cannot_reach_is_caught(params):
-    parts = {p.name: p for p in head_frame.build(params)}
-    drive = ["eyes_tilt_gearhead", "eyes_tilt_motor", "eyes_tilt_encoder"]
-    screws = [f"eyes_tilt_gearhead_screw_{k}" for k in range(4)]
-    chosen = [parts[n] for n in ["head_side_plate_left", *drive, *screws, "eyes_tilt_motor_pulley"]]
-    plate = {"name": "plate", "parts": ["head_side_plate_left"], "fixture": True}
-    gearhead = {"name": "drive", "parts": drive, "from": [[0, -70, 0]]}
-    fixing = {"name": "screws", "fasteners": ["eyes_tilt_gearhead_screw_*"]}
-    pulley = {"name": "pulley", "parts": ["eyes_tilt_motor_pulley"], "from": [[0, 20, 0]], "fits": ["eyes_tilt_gearhead"]}
-    assert _check(params, chosen, [plate, gearhead, fixing, pulley]).ok
-    # The motor pulley on first: its flanges cover the screws' heads, which come in from outside.
-    report = _check(params, chosen, [plate, gearhead, pulley, fixing])
-    assert report.problems and report.problems[0].step == "step 4 'screws'"
-    assert re.match(r"eyes_tilt_gearhead_screw_0 \(hex-1.5\): .* hits eyes_tilt_motor_pulley", report.problems[0].what)
+def test_a_screw_the_driver_cannot_reach_is_caught(params, tmp_path):
+    """The tilt coupling's clamp screws go in from above through the jackshaft housing's window; a window narrower
+    than their heads leaves them no way in."""
+    def steps(p):
+        parts = {q.name: q for q in head_frame.build(p)}
+        chosen = [parts[n] for n in ["eyes_tilt_jackshaft_housing", "eyes_tilt_coupling",
+                                     "eyes_tilt_coupling_screw_0", "eyes_tilt_coupling_screw_1"]]
+        housing = {"name": "housing", "parts": ["eyes_tilt_jackshaft_housing"], "fixture": True}
+        coupling = {"name": "coupling", "parts": ["eyes_tilt_coupling"], "from": [[0, -50, 0]],
+                    "fits": ["eyes_tilt_jackshaft_housing"]}
+        fixing = {"name": "screws", "fasteners": ["eyes_tilt_coupling_screw_*"]}
+        return _check(p, chosen, [housing, coupling, fixing])
+    assert steps(params).ok
+    narrow = edited(tmp_path, lambda data: data["geometry"]["tilt_jackshaft"]["housing"].update(window=2))
+    report = steps(narrow)
+    assert report.problems and report.problems[0].step == "step 3 'screws'"
+    assert re.match(r"eyes_tilt_coupling_screw_0 \(hex-1.5\): .* hits eyes_tilt_jackshaft_housing",
+                    report.problems[0].what)
+
+
+def test_a_bearing_pressed_onto_a_shaft_is_pressed_by_its_inner_ring(params):
+    """The jackshaft's bearings are pressed on their inner rings: a sleeve round the shaft reaches them, where an
+    arbor on the outer ring, the way a bearing goes into a housing, would have to pass through the shaft."""
+    parts = {q.name: q for q in head_frame.build(params)}
+    chosen = [parts["eyes_tilt_jackshaft"], parts["eyes_tilt_jackshaft_bearing_fixed"]]
+    shaft = {"name": "shaft", "parts": ["eyes_tilt_jackshaft"], "fixture": True}
+    press = {"name": "bearing", "parts": ["eyes_tilt_jackshaft_bearing_fixed"], "from": [[0, 40, 0]],
+             "fits": ["eyes_tilt_jackshaft"], "press": "inner"}
+    assert _check(params, chosen, [shaft, press]).ok
+    report = _check(params, chosen, [shaft, dict(press, press="outer")])
+    assert re.match(r"press arbor for eyes_tilt_jackshaft_bearing_fixed: .* hits eyes_tilt_jackshaft",
+                    report.problems[0].what)
 
 
 def test_a_contact_that_is_not_a_declared_fit_is_caught(params, neck_parts):

@@ -45,30 +45,23 @@ def test_a_belt_wider_than_the_pulleys_is_named(params, external, tmp_path):
     data["geometry"]["pulleys"]["tilt"]["width"] = 6
     path = tmp_path / "narrow.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ParameterError, match=r"purchased\.mxl-belt-6mm: a 6.4 mm wide belt does not run between "
+    with pytest.raises(ParameterError, match=r"purchased\.xl-belt-037: a 9.525 mm wide belt does not run between "
                                              r"the flanges of 6 mm pulleys \(4.8 mm apart\)"):
         build_all(load(path), external)
 
 
-def _tilt_on_xl(data):
-    """The tilt stage on XL 037 stock, 14T to 24T on 16 mm pulleys; yaw left on MXL (a check of the per-stage
-    geometry only: the head is not assembled)."""
-    data["purchased"]["xl-belt-037"] = {"kind": "belt", "profile": "XL", "width": 9.525, "thickness": 2.3,
-                                        "tooth_height": 1.27, "mass_per_metre": 0.03}
-    data["geometry"]["pulleys"]["tilt"].update(joint_teeth=24, belt="xl-belt-037", pitch=5.08, width=16)
-
-
 def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path):
-    """The tilt pulleys come out at XL diameters (14T: pitch 22.64, outside 22.13, flanges 1.5 beyond) and 16 mm wide,
-    its belt is cut from the XL stock to 2C + pi (D + d) / 2 + (D - d)^2 / 4C = 269.4 mm at the present 86.05 mm, so 54
-    teeth, while the yaw stage keeps its MXL pulleys and 56-tooth belt."""
-    xl = edited(tmp_path, _tilt_on_xl)
-    box = mounts.pulley(xl, "eyes_tilt", 14, 3).BoundingBox()
-    assert (box.xlen, box.zlen) == (pytest.approx(14 * 5.08 / math.pi - 0.508 + 3), pytest.approx(16))
-    yaw = mounts.pulley(xl, "neck_yaw", 14, 4).BoundingBox()
+    """The tilt pulleys come out at XL diameters (14T: pitch 22.64, outside 22.13, the catalogue's 28 mm flanges, its
+    own rim) and 14.3 mm wide, its belt is cut from the XL stock to 2C + pi (D + d) / 2 + (D - d)^2 / 4C = 269.19 mm
+    at the motor's 85.95 mm, so 53 teeth (106XL), while the yaw stage keeps its MXL pulleys and 56-tooth belt. Moved
+    back to the old 86.05 mm the belt needs 54 teeth."""
+    box = mounts.pulley(params, "eyes_tilt", 14, 3).BoundingBox()
+    assert (box.xlen, box.zlen) == (pytest.approx(28.0, abs=0.01), pytest.approx(14.3))
+    yaw = mounts.pulley(params, "neck_yaw", 14, 4).BoundingBox()
     assert (yaw.xlen, yaw.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
-    assert mounts.belts(xl) == [("mxl-belt-56T", "neck_yaw", 56), ("xl-belt-54T", "eyes_tilt", 54)]
-    assert mounts.belts(params) == [("mxl-belt-56T", "neck_yaw", 56), ("mxl-belt-108T", "eyes_tilt", 108)]
-    loop = mounts.belt_loop(xl, "eyes_tilt", 86.05, 24, 14)
+    assert mounts.belts(params) == [("mxl-belt-56T", "neck_yaw", 56), ("xl-belt-53T", "eyes_tilt", 53)]
+    old = edited(tmp_path, lambda data: data["geometry"]["head"]["tilt_motor"].update(x=-35, z=85))
+    assert mounts.belts(old)[1] == ("xl-belt-54T", "eyes_tilt", 54)
+    loop = mounts.belt_loop(params, "eyes_tilt", 85.95, 24, 14)
     assert loop.BoundingBox().zlen == pytest.approx(9.525)
-    assert "XL pulley, 24 teeth, pitch dia. 38.81" in mounts.pulley_note(xl, "eyes_tilt", 24, 6, set_screws=True)
+    assert "XL pulley, 24 teeth, pitch dia. 38.81" in mounts.pulley_note(params, "eyes_tilt", 24, 6, set_screws=True)

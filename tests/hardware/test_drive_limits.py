@@ -88,13 +88,13 @@ def test_the_board_current_limit_caps_the_effort(params, tmp_path):
 
 
 def test_the_gearhead_rating_caps_the_torque_before_the_belt(tmp_path):
-    """The 16/7 43:1 drives the eye pans directly and the eye tilt through the 32/14 belt: its rating caps the
+    """The 16/7 43:1 drives the eye pans directly and the eye tilt through the 24/14 belt: its rating caps the
     torque on its own shaft, which the belt then multiplies."""
     def derate(data):
         data["purchased"]["faulhaber-16-7-43"]["continuous_torque_Nm"] = 0.02
     limits = drive_limits.limits(edited(tmp_path, derate))
     assert (limits["left_eye_pan"].effort, limits["left_eye_pan"].limited_by) == (pytest.approx(0.02), "gearhead")
-    assert (limits["eyes_tilt"].effort, limits["eyes_tilt"].limited_by) == (pytest.approx(0.02 * 32 / 14), "gearhead")
+    assert (limits["eyes_tilt"].effort, limits["eyes_tilt"].limited_by) == (pytest.approx(0.02 * 24 / 14), "gearhead")
 
 
 def test_belt_pull_is_the_gearhead_torque_on_the_motor_pulley(params):

@@ -64,7 +64,7 @@ def _size(part) -> tuple[float, float, float]:
     ("geometry.motor_mounts.neck_pitch.outline", [-22, 22, -18, 18], neck, "neck_pitch_motor_mount",
      lambda p: _size(p)[0], 44),
     ("geometry.motor_mounts.neck_yaw.thickness", 4, head_frame, "neck_yaw_motor_mount", lambda p: _size(p)[2], 4),
-    ("geometry.head.tilt_motor_clamp.half_width", 9, head_frame, "eyes_tilt_motor_clamp", lambda p: _size(p)[1], 18),
+    ("geometry.tilt_jackshaft.housing.front", 24, head_frame, "eyes_tilt_jackshaft_housing", lambda p: _size(p)[0], 35),
     ("geometry.motor_mounts.neck_yaw.fixings", [[-11, -10], [-11, 10], [11, -10], [11, 10]], head_frame,
      "yaw_mount_screw_0", lambda p: p.placement.toTuple()[0][0], -30 - 11),
     ("geometry.head.joins.side_floor_x", [-38, 20], head_frame, "side_floor_screw_left_0",
@@ -103,8 +103,8 @@ def test_wider_mount_holes_take_material_from_the_flange(raw, tmp_path, params):
     ("geometry.gearhead_flange.bolt_circle_ratio", 1.2, r"geometry\.gearhead_flange\.bolt_circle_ratio: must be <= 1"),
     ("geometry.gearhead_flange.counterbore", [2, 2.2], r"geometry\.gearhead_flange\.counterbore: expected a diameter "
                                                         r"above the clearance"),
-    ("geometry.head.tilt_motor_clamp.counterbore", 5, r"geometry\.head\.tilt_motor_clamp\.counterbore: 5 does not "
-                                                      r"take the 5\.7 mm heads"),
+    ("geometry.tilt_jackshaft.housing.cavity", 16, r"geometry\.tilt_jackshaft\.housing\.cavity: 16 does not take "
+                                                   r"the 16 mm coupling"),
     ("geometry.covers.skirt_cable_exit.height", 96, r"geometry\.covers\.skirt_cable_exit\.height: 96 leaves nothing"),
     ("geometry.neck_base.cable_pass.from_edge", [40, 20], r"geometry\.neck_base\.cable_pass\.from_edge"),
     ("geometry.head.joins.back_side_z", [15], r"geometry\.head\.joins\.back_side_z: expected a list of 2 numbers"),

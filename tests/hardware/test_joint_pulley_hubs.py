@@ -108,8 +108,8 @@ M2 = {"kind": "set_screw", "diameter": 2, "length": 3, "holding_force_N": 289, "
 
 def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(params, tmp_path):
     """Yaw: 2 x 712 N at the Ø15 shaft's radius is 10.7 N m against the drive's 2.09 N m peak there; one M2 set
-    screw (2.2 N m) is below the 1.5 margin, a plain bore carries nothing. Tilt: 4.3 N m against 0.60 N m; one M2
-    (0.87 N m) falls short too."""
+    screw (2.2 N m) is below the 1.5 margin, a plain bore carries nothing. Tilt: 4.3 N m against 0.45 N m (the
+    24/14 XL stage); a plain bore fails, while one M2 (0.87 N m, margin 1.94) would now pass."""
     report = torque_path.analyse(params)
     for joint in JOINTS:
         (hub,) = [e for e in report.elements if e.joint == joint and e.at == "joint"]
@@ -117,17 +117,26 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
     assert [e for e in report.elements if e.joint == "neck_yaw" and e.at == "joint"][0].capacity_Nm == \
         pytest.approx(2 * 712 * 7.5 / 1000)
 
-    for joint in JOINTS:
-        for weaken in (lambda e: e.update(count=1, screw="iso4029-M2x3"),
-                       lambda e: (e.update(element="plain", length=8), e.pop("count"), e.pop("screw"))):
+    one_m2 = lambda e: e.update(count=1, screw="iso4029-M2x3")   # noqa: E731
+    plain = lambda e: (e.update(element="plain", length=8), e.pop("count"), e.pop("screw"))   # noqa: E731
+    for joint, weakenings in (("neck_yaw", (one_m2, plain)), ("eyes_tilt", (plain,))):
+        index = [e["at"] for e in params.root.raw("torque_paths")[joint]].index("joint")
+        for weaken in weakenings:
             def edit(data, joint=joint, weaken=weaken):
                 data["purchased"]["iso4029-M2x3"] = M2
                 weaken(next(e for e in data["torque_paths"][joint] if e["at"] == "joint"))
             weak = torque_path.analyse(edited(tmp_path, edit))
             failed = [e for e in weak.failures() if e.joint == joint and e.at == "joint"]
             assert len(failed) == 1, (joint, weak.elements)
-            with pytest.raises(torque_path.TorquePathError, match=rf"{joint}\[2\]"):
+            with pytest.raises(torque_path.TorquePathError, match=rf"{joint}\[{index}\]"):
                 torque_path.enforce(weak)
+
+    def tilt_one_m2(data):
+        data["purchased"]["iso4029-M2x3"] = M2
+        one_m2(next(e for e in data["torque_paths"]["eyes_tilt"] if e["at"] == "joint"))
+    (hub,) = [e for e in torque_path.analyse(edited(tmp_path, tilt_one_m2)).elements
+              if e.joint == "eyes_tilt" and e.at == "joint"]
+    assert hub.margin == pytest.approx(289 * 3 / 1000 / (0.261 * 24 / 14), rel=0.01)
 
 
 @pytest.mark.parametrize("edit, message", [

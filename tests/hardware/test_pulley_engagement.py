@@ -61,13 +61,31 @@ def engagement(pulley, gearhead):
     return engaged, s1 - s0
 
 
-@pytest.mark.parametrize("joint", ["neck_yaw", "eyes_tilt"])
-def test_motor_pulley_holds_most_of_the_shaft(assembly, params, joint):
+def test_motor_pulley_holds_most_of_the_shaft(assembly, params):
+    joint = "neck_yaw"
     placed = {p.part.name: p.shape for p in assembly.pose({})}
     engaged, shaft = engagement(placed[f"{joint}_motor_pulley"], placed[f"{joint}_gearhead"])
     expected = params.purchased(params.drive(joint).text("gearhead")).num("shaft_length")
     assert shaft == pytest.approx(expected)
     assert engaged >= MIN_ENGAGEMENT * shaft, f"{joint}: the pulley holds {engaged:.2f} of {shaft:g} mm of shaft"
+
+
+def test_the_tilt_motor_pulley_sits_on_the_jackshaft_over_its_whole_bore(assembly, params):
+    """The tilt's catalogue pulley is on its jackshaft (parts/tilt_jackshaft.py): its whole 20 mm bore (14.3 over the
+    flanges and the 5.7 mm hub) holds the shaft, less the two 0.5 mm flats under its set screws (about 0.45 mm of the
+    shaft's section-length)."""
+    from robogene_head.parts import tilt_jackshaft
+    placed = {p.part.name: p.shape for p in assembly.pose({})}
+    lay = tilt_jackshaft.layout(params)
+    pulley = placed["eyes_tilt_motor_pulley"].BoundingBox()
+    radius = tilt_jackshaft.node(params).node("shaft").num("diameter") / 2
+    # the jackshaft placed at the zero pose (the head frame sits above the neck base, not turned)
+    shaft = placed["eyes_tilt_jackshaft"].BoundingBox()
+    x, z = (shaft.xmin + shaft.xmax) / 2, (shaft.zmin + shaft.zmax) / 2
+    region = cq.Solid.makeCylinder(radius, pulley.ymax - pulley.ymin, cq.Vector(x, pulley.ymin, z), cq.Vector(0, 1, 0))
+    engaged = placed["eyes_tilt_jackshaft"].intersect(region).Volume() / (math.pi * radius ** 2)
+    assert pulley.ymax - pulley.ymin == pytest.approx(14.3 + 5.7) and lay.shaft[1] == pytest.approx(pulley.ymax)
+    assert 20 - 0.6 < engaged < 20
 
 
 def test_a_hub_gap_that_leaves_no_hub_is_named(params, external, tmp_path):

@@ -15,7 +15,7 @@ def test_reductions_include_the_belts(params):
     assert j["neck_pitch"]["reduction"] == 66
     assert j["neck_yaw"]["reduction"] == pytest.approx(66 * 36 / 14)
     assert j["neck_roll"]["reduction"] == 246
-    assert j["eyes_tilt"]["reduction"] == pytest.approx(43 * 32 / 14)   # the 16/7 43:1 and the tilt belt
+    assert j["eyes_tilt"]["reduction"] == pytest.approx(43 * 24 / 14)   # the 16/7 43:1 and the tilt belt
     assert j["left_eye_pan"]["motor_counts_per_joint_degree"] == pytest.approx(4 * 512 * 43 / 360)
     assert "joint_encoder" not in j["left_eye_pan"]
     assert [c["name"] for c in cfg["control_board"]] == list(P.CONTROL_JOINTS)

@@ -29,6 +29,10 @@ PURCHASED_KINDS = {
     "shaft_ring": ("shaft", "groove_diameter", "groove_width", "thickness", "groove_edge", "outside_diameter",
                    "lug_outer_diameter", "mass"),
     "shim": ("bore", "outside", "thickness", "mass"),
+    # a shaft coupling: across, long, its two bores (the clamp screws: robogene_head/parts/tilt_jackshaft.py)
+    "coupling": ("diameter", "length", "offset", "seat", "mass"),
+    # a catalogue timing pulley, drawn from its stage (geometry.pulleys)
+    "pulley": ("mass",),
     "camera": ("board_width", "board_height", "thickness", "lens_diameter", "lens_length", "mass"),
     "screw": ("diameter", "length", "head_diameter", "head_height", "mass"),
     # a headless set screw (ISO 4026..4029): holding_force_N, the maker's axial holding force at its seating torque

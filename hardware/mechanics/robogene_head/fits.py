@@ -201,7 +201,9 @@ def seats(params: HeadParameters, parts: list) -> dict[str, Seat]:
         if "housing" not in found or "journal" not in found:
             continue
         # the ring on the part nearer the base stands still relative to the load
-        inner_turns = _depth(params, found["housing"].link) < _depth(params, found["journal"].link)
+        # (or the journal is a shaft that turns in its own link's housing, against a load standing in it)
+        inner_turns = (_depth(params, found["housing"].link) < _depth(params, found["journal"].link)
+                       or found["journal"].turning)
         out[b.name] = Seat(b.name, b.design, found["housing"].name, found["journal"].name,
                            tolerance(params, "housing", not inner_turns), tolerance(params, "journal", inner_turns),
                            inner_turns)

@@ -340,6 +340,8 @@ class _Checker:
         start = frame[:3, :3] @ np.array([0, 0, face_z]) + frame[:3, 3]
         names = [n for n in placed if n != bearing]
         if not names:
+            result.tools.append({"tool": f"press sleeve for {bearing} on its inner ring", "reach_mm": 0.0,
+                                 "clearance_mm": None})
             return
         reach = _exit_distance(start, -travel, self.w.bbox(names + [bearing])) + OUTSIDE_MARGIN
         z0, z1 = sorted((face_z, face_z - sign * reach))
@@ -393,9 +395,11 @@ class _Checker:
         """Cylinders along `direction` from `start`: `diameter` (the screw head, an arbor) and `blade` up to
         `blade_length`, then `handle`, each until the bounding box of everything so far is left."""
         names = [n for n in placed if n not in exclude]
-        everything = self.w.bbox(names + list(exclude)) if names else None
-        if everything is None:
+        if not names:
+            # nothing else in place yet (a bearing pressed onto the first part of a subassembly): clear by itself
+            result.tools.append({"tool": label, "reach_mm": 0.0, "clearance_mm": None})
             return
+        everything = self.w.bbox(names + list(exclude))
         reach = _exit_distance(start, direction, everything) + OUTSIDE_MARGIN
         pieces = [(diameter, 0.0, reach)]
         if blade is not None and blade > diameter:

@@ -29,6 +29,7 @@ class Part:
     # in the order of local.Solids(); all other parts are one solid of `material`.
     solid_materials: tuple[str, ...] = ()
     source_sha256: str = ""   # geometry read from another tool's file: that file's hash, for the build's caches
+    turning: bool = False     # a shaft that turns in bearings of its own link (the fits: its ring is the tight one)
 
     def __post_init__(self):
         if self.kind not in KINDS:

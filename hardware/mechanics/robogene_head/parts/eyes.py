@@ -97,10 +97,17 @@ def build(params: HeadParameters) -> list[Part]:
     bore = tilt_bearing.num("bore")
     # The joint pulley's hub stands outboard of it; its set screws bear on the flats of the left tilt shaft.
     at = pulley_at
-    parts.append(Part("eyes_tilt_joint_pulley", f"pulley_mxl_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link", "machined",
-                      mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True), at,
-                      material="aluminium-6082", color=ALUMINIUM,
-                      note=mounts.pulley_note(params, "eyes_tilt", teeth, bore, set_screws=True)))
+    # a catalogue pulley where the parameter file lists one for the stage's profile, else made to the drawing
+    profile = params.purchased(mounts.belt_key(params, "eyes_tilt")).text("profile").lower()
+    key = f"{profile}-pulley-{teeth}T-bore{bore:g}"
+    shape = mounts.joint_pulley(params, "eyes_tilt", teeth, bore, outboard=True)
+    note = mounts.pulley_note(params, "eyes_tilt", teeth, bore, set_screws=True)
+    if params.root.node("purchased").has(key):
+        parts.append(Part("eyes_tilt_joint_pulley", key, "eyes_tilt_link", "purchased", shape, at,
+                          mass=params.purchased(key).num("mass"), color=ALUMINIUM, note=note))
+    else:
+        parts.append(Part("eyes_tilt_joint_pulley", f"pulley_{profile}_{teeth}T_bore{bore:g}_hub", "eyes_tilt_link",
+                          "machined", shape, at, material="aluminium-6082", color=ALUMINIUM, note=note))
     screw = mounts.joint_set_screw(params)
     parts += [purchased.set_screw(params, f"eyes_tilt_pulley_set_screw_{i}", screw, "eyes_tilt_link", at * frame)
               for i, frame in enumerate(mounts.set_screw_frames(params, "eyes_tilt", bore, outboard=True))]

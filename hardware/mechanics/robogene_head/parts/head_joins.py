@@ -40,9 +40,9 @@ def notes(params: HeadParameters) -> dict[str, str]:
                       f"drill 2.5), drawn at 3.0, for the yaw motor mount; {pocket:g} x {pocket + slot:g} slots "
                       f"{pocket_depth:g} deep for its gearhead screws' heads",
         "head_side_plate": f"M3 tapped {depth:g} deep (tap drill 2.5) in front and bottom edges, drawn at 3.0; {c2:g} "
-                           f"through for M2; at the tilt motor hole " + gearhead_screws.note(params),
-        "head_back_plate": f"M2 tapped {depth:g} deep (tap drill 1.6) in bottom and side edges, drawn at 2.0; 2 x M3 "
-                           f"tapped through (tap drill 2.5), drawn at 3.0, for the tilt motor clamp",
+                           f"through for M2; left plate: {c3:g} slots for the tilt jackshaft housing's M3 and the "
+                           f"jackshaft's passage, along x (belt tension)",
+        "head_back_plate": f"M2 tapped {depth:g} deep (tap drill 1.6) in bottom and side edges, drawn at 2.0",
         "head_top_bar": f"4 x M2 tapped {depth:g} deep (tap drill 1.6) in the ends, drawn at 2.0",
     }
 

@@ -116,6 +116,12 @@ def pitch_differential(params: HeadParameters) -> float:
     return params.geometry("pulleys").num("pitch_differential", positive=True)
 
 
+def rim(params: HeadParameters, joint: str) -> float:
+    """How far the stage's pulley flanges stand out beyond the teeth: its own `rim`, else pulleys.flange.rim."""
+    node = stage(params, joint)
+    return (node if node.has("rim") else params.geometry("pulleys", "flange")).num("rim", positive=True)
+
+
 def flange_thickness(params: HeadParameters) -> float:
     return params.geometry("pulleys", "flange").num("thickness", positive=True)
 
@@ -135,7 +141,7 @@ def pulley(params: HeadParameters, joint: str, teeth: int, bore: float, hub_leng
     gearhead's shaft."""
     width = pulley_width(params, joint)
     outside = pitch_diameter(params, joint, teeth) - pitch_differential(params)
-    flange, f = outside + 2 * params.geometry("pulleys", "flange").num("rim", positive=True), flange_thickness(params)
+    flange, f = outside + 2 * rim(params, joint), flange_thickness(params)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
     if hub_length > 0:
@@ -147,89 +153,105 @@ def joint_hub(params: HeadParameters) -> Node:
     return params.geometry("pulleys", "joint_hub")
 
 
-def joint_hub_length(params: HeadParameters) -> float:
-    return joint_hub(params).num("length", positive=True)
+def motor_hub(params: HeadParameters, joint: str) -> Node:
+    """The set-screw hub of a catalogue motor pulley (geometry.pulleys.<stage>.motor_hub), keyed as joint_hub."""
+    return stage(params, joint).node("motor_hub")
 
 
-def joint_set_screw(params: HeadParameters) -> str:
-    """The purchased set screw of the joint pulleys' hubs; its length is the hub's wall, so it sits flush."""
-    key = joint_hub(params).text("set_screw")
+def _hub(params: HeadParameters, hub: Node | None) -> Node:
+    return joint_hub(params) if hub is None else hub
+
+
+def joint_hub_length(params: HeadParameters, hub: Node | None = None) -> float:
+    return _hub(params, hub).num("length", positive=True)
+
+
+def joint_set_screw(params: HeadParameters, hub: Node | None = None) -> str:
+    """The purchased set screw of a pulley's hub (the joint pulleys' unless `hub` is given); its length is at most
+    the hub's wall, so it sits below the hub's surface."""
+    node = _hub(params, hub)
+    key = node.text("set_screw")
     screw = params.purchased(key)
     if screw.text("kind") != "set_screw":
-        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.set_screw: {key!r} is a "
-                             f"{screw.text('kind')}, expected a set_screw")
-    wall = joint_hub(params).num("wall", positive=True)
+        raise node._fail("set_screw", f"{key!r} is a {screw.text('kind')}, expected a set_screw")
+    wall = node.num("wall", positive=True)
     if screw.num("length", positive=True) > wall:
-        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.wall: {wall:g} is shorter than the "
-                             f"{key} set screw ({screw.num('length'):g}), which would stand out of the hub")
-    if screw.num("diameter", positive=True) >= joint_hub_length(params):
-        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.length: {joint_hub_length(params):g} "
-                             f"leaves no metal around the {key} set screw's thread")
+        raise node._fail("wall", f"{wall:g} is shorter than the {key} set screw ({screw.num('length'):g}), which "
+                                 f"would stand out of the hub")
+    if screw.num("diameter", positive=True) >= joint_hub_length(params, hub):
+        raise node._fail("length", f"{joint_hub_length(params, hub):g} leaves no metal around the {key} set "
+                                   f"screw's thread")
     return key
 
 
-def set_screw_angles(params: HeadParameters, joint: str) -> list[float]:
-    """Where the joint pulley's set screws sit about its axis (deg from its x axis)."""
+def set_screw_angles(params: HeadParameters, joint: str, hub: Node | None = None) -> list[float]:
+    """Where a pulley's set screws sit about its axis (deg from its x axis): a joint pulley's per stage, a motor
+    pulley's in its hub."""
     from robogene_head_model.drive_limits import BELTED
-    node = joint_hub(params).node("set_screw_angles")
-    value = node.raw(BELTED[joint])
+    node, key = (joint_hub(params).node("set_screw_angles"), BELTED[joint]) if hub is None else (hub, "set_screw_angles")
+    value = node.raw(key)
     if not isinstance(value, list) or not value:
-        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.set_screw_angles.{BELTED[joint]}: expected "
-                             f"a list of angles (deg), got {value!r}")
-    return list(node.vec(BELTED[joint], len(value)))
+        raise node._fail(key, f"expected a list of angles (deg), got {value!r}")
+    return list(node.vec(key, len(value)))
 
 
-def joint_hub_span(params: HeadParameters, joint: str, outboard: bool) -> tuple[float, float]:
-    """z range of a joint pulley's hub in the pulley's frame (body z 0..width): below it or beyond it."""
-    width, length = pulley_width(params, joint), joint_hub_length(params)
+def joint_hub_span(params: HeadParameters, joint: str, outboard: bool, hub: Node | None = None) -> tuple[float, float]:
+    """z range of a pulley's hub in the pulley's frame (body z 0..width): below it or beyond it."""
+    width, length = pulley_width(params, joint), joint_hub_length(params, hub)
     return (width, width + length) if outboard else (-length, 0.0)
 
 
-def flat_depth(params: HeadParameters, bore: float) -> float:
-    """How deep the flat is that each set screw bears on (joint_hub.flat_depth): wide enough for the screw's end."""
-    depth = joint_hub(params).num("flat_depth", positive=True)
-    screw = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
+def flat_depth(params: HeadParameters, bore: float, hub: Node | None = None) -> float:
+    """How deep the flat is that each set screw bears on (flat_depth): wide enough for the screw's end."""
+    node = _hub(params, hub)
+    depth = node.num("flat_depth", positive=True)
+    screw = params.purchased(joint_set_screw(params, hub)).num("diameter", positive=True)
     if depth >= bore / 2 or 2 * math.sqrt(bore * bore / 4 - (bore / 2 - depth) ** 2) < screw:
-        raise ParameterError(f"{params.path}: geometry.pulleys.joint_hub.flat_depth: {depth:g} on a {bore:g} mm "
-                             f"shaft does not make a flat as wide as the M{screw:g} set screw")
+        raise node._fail("flat_depth", f"{depth:g} on a {bore:g} mm shaft does not make a flat as wide as the "
+                                       f"M{screw:g} set screw")
     return depth
 
 
-def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Location]:
+def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: bool,
+                     hub: Node | None = None) -> list[cq.Location]:
     """Each set screw's frame in its pulley's frame: +z radially in, its end on the shaft's flat under it (so
     its socket end sits the flat's depth below the hub's surface)."""
-    z0, z1 = joint_hub_span(params, joint, outboard)
-    length = params.purchased(joint_set_screw(params)).num("length", positive=True)
-    r = bore / 2 - flat_depth(params, bore) + length
+    z0, z1 = joint_hub_span(params, joint, outboard, hub)
+    length = params.purchased(joint_set_screw(params, hub)).num("length", positive=True)
+    r = bore / 2 - flat_depth(params, bore, hub) + length
     frames = []
-    for angle in set_screw_angles(params, joint):
+    for angle in set_screw_angles(params, joint, hub):
         a = math.radians(angle)
         frames.append(cq.Location(cq.Vector(r * math.cos(a), r * math.sin(a), (z0 + z1) / 2), cq.Vector(0, 0, 1), angle)
                       * cq.Location(cq.Vector(), cq.Vector(0, 1, 0), -90))
     return frames
 
 
-def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool) -> list[cq.Shape]:
+def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool,
+                hub: Node | None = None) -> list[cq.Shape]:
     """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub."""
-    z0, z1 = joint_hub_span(params, joint, outboard)
-    inner = bore / 2 - flat_depth(params, bore)
+    z0, z1 = joint_hub_span(params, joint, outboard, hub)
+    inner = bore / 2 - flat_depth(params, bore, hub)
     return [geom.box(inner, bore, -bore, bore, z0, z1).moved(cq.Location(cq.Vector(), cq.Vector(0, 0, 1), angle))
-            for angle in set_screw_angles(params, joint)]
+            for angle in set_screw_angles(params, joint, hub)]
 
 
-def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, outboard: bool) -> cq.Shape:
-    """A joint pulley: the pulley envelope with a hub (joint_hub_span) carrying tapped radial holes for its set
-    screws, drawn at the thread's size like every tapped hole of the head."""
-    hub = joint_hub(params)
-    z0, z1 = joint_hub_span(params, joint, outboard)
+def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, outboard: bool,
+                 hub_node: Node | None = None) -> cq.Shape:
+    """A set-screw pulley: the pulley envelope with a hub (joint_hub_span; the joint pulleys' unless hub_node is
+    given) carrying tapped radial holes for its set screws, drawn at the thread's size like every tapped hole of
+    the head."""
+    hub = _hub(params, hub_node)
+    z0, z1 = joint_hub_span(params, joint, outboard, hub_node)
     body = geom.union(pulley(params, joint, teeth, bore), geom.cyl("z", bore + 2 * hub.num("wall", positive=True), z0, z1))
-    thread = params.purchased(joint_set_screw(params)).num("diameter", positive=True)
+    thread = params.purchased(joint_set_screw(params, hub_node)).num("diameter", positive=True)
     holes = [geom.cyl("z", bore, z0 - 1, z1 + 1)]
     # each tapped hole opens on a flat land LAND_DEPTH below the hub's round surface (as on the drive hubs): in the
     # screw's frame x runs along the pulley's axis, y across, z radially in from the socket end
     outer = bore / 2 + hub.num("wall")
-    inside = outer - (bore / 2 - flat_depth(params, bore) + params.purchased(joint_set_screw(params)).num("length"))
-    for frame in set_screw_frames(params, joint, bore, outboard):
+    inside = outer - (bore / 2 - flat_depth(params, bore, hub_node)
+                      + params.purchased(joint_set_screw(params, hub_node)).num("length"))
+    for frame in set_screw_frames(params, joint, bore, outboard, hub_node):
         holes.append(geom.cyl("z", thread, -1, hub.num("wall") + 1).moved(frame))
         if inside >= LAND_DEPTH:
             holes.append(geom.box(-(thread + 1) / 2, (thread + 1) / 2, -outer - 1, outer + 1,
@@ -312,14 +334,14 @@ def belt_loop(params: HeadParameters, joint: str, centre_distance: float, teeth_
 
 
 def pulley_note(params: HeadParameters, joint: str, teeth: int, bore: float, hub: bool = False,
-                set_screws: bool = False) -> str:
+                set_screws: bool = False, hub_node: Node | None = None) -> str:
     """What the drawing of a pulley must say: its teeth are not modelled; a motor pulley's hub, too thin for a set
     screw, is bonded to the shaft; a joint pulley's hub takes set screws (kept short: one line on the sheet)."""
     fixing = ", hub bonded to the shaft" if hub else ""
     profile = params.purchased(belt_key(params, joint)).text("profile")
     if set_screws:
-        screw = params.purchased(joint_set_screw(params))
-        fixing = (f", hub {len(set_screw_angles(params, joint))} x M{screw.num('diameter'):g} tapped radial for "
-                  f"{joint_set_screw(params)} set screws")
+        screw = params.purchased(joint_set_screw(params, hub_node))
+        fixing = (f", hub {len(set_screw_angles(params, joint, hub_node))} x M{screw.num('diameter'):g} tapped radial "
+                  f"for {joint_set_screw(params, hub_node)} set screws")
     return (f"{profile} pulley, {teeth} teeth, pitch dia. {pitch_diameter(params, joint, teeth):.2f}, bore {bore:g} "
             f"H7{fixing}; teeth not drawn: {profile} profile")
