@@ -93,7 +93,7 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       0u},
      {"eyes_tilt", -12581, 12581, 62903, 620,
       114, 1, 1140, 8u, 0, 900, 300,
-      559.1365079365079f, 512u, 14u,
+      419.35238095238094f, 512u, 14u,
       0, 0, 0, 0, 0, 0u, 0,
       0u}
    }},
