@@ -16,6 +16,7 @@ from OCP.BRepTools import BRepTools
 from OCP.GeomAbs import GeomAbs_Cylinder
 
 from robogene_head_model.params import DEFAULT_PATH, ParameterError, load
+from robogene_head.geom import exact_bounds
 from robogene_head.parts import build_all
 
 MIN_ENGAGEMENT = 0.75   # of the shaft's length
@@ -77,14 +78,15 @@ def test_the_tilt_motor_pulley_sits_on_the_jackshaft_over_its_whole_bore(assembl
     from robogene_head.parts import tilt_jackshaft
     placed = {p.part.name: p.shape for p in assembly.pose({})}
     lay = tilt_jackshaft.layout(params)
-    pulley = placed["eyes_tilt_motor_pulley"].BoundingBox()
+    # exact bounds: OCCT's plain bounding box pads by the shapes' tolerance (about 0.03 mm here)
+    (_, ymin, _), (_, ymax, _) = exact_bounds(placed["eyes_tilt_motor_pulley"])
     radius = tilt_jackshaft.node(params).node("shaft").num("diameter") / 2
     # the jackshaft placed at the zero pose (the head frame sits above the neck base, not turned)
-    shaft = placed["eyes_tilt_jackshaft"].BoundingBox()
-    x, z = (shaft.xmin + shaft.xmax) / 2, (shaft.zmin + shaft.zmax) / 2
-    region = cq.Solid.makeCylinder(radius, pulley.ymax - pulley.ymin, cq.Vector(x, pulley.ymin, z), cq.Vector(0, 1, 0))
+    lo, hi = exact_bounds(placed["eyes_tilt_jackshaft"])
+    x, z = (lo[0] + hi[0]) / 2, (lo[2] + hi[2]) / 2
+    region = cq.Solid.makeCylinder(radius, ymax - ymin, cq.Vector(x, ymin, z), cq.Vector(0, 1, 0))
     engaged = placed["eyes_tilt_jackshaft"].intersect(region).Volume() / (math.pi * radius ** 2)
-    assert pulley.ymax - pulley.ymin == pytest.approx(14.3 + 5.7) and lay.shaft[1] == pytest.approx(pulley.ymax)
+    assert ymax - ymin == pytest.approx(14.3 + 5.7) and lay.shaft[1] == pytest.approx(ymax)
     assert 20 - 0.6 < engaged < 20
 
 
