@@ -130,15 +130,6 @@ def required_float(params: HeadParameters, span: float) -> tuple[float, float, f
     return growth + tol, growth, tol
 
 
-def _matrix(loc) -> np.ndarray:
-    t = loc.wrapped.Transformation()
-    m = np.eye(4)
-    for i in range(3):
-        for j in range(4):
-            m[i, j] = t.Value(i + 1, j + 1)
-    return m
-
-
 def _annulus(params: HeadParameters, key: str, ring: str) -> tuple[float, float]:
     """Radii (mm) of a ring's face: what a stop must overlap to hold that ring."""
     item = params.purchased(key)
@@ -220,7 +211,7 @@ def _direction(v: np.ndarray) -> str:
 
 
 def _bearing_state(params, seat, part, joint, by_link, by_name, poses, located, search) -> BearingState:
-    frame = poses[part.link] @ _matrix(part.placement)
+    frame = poses[part.link] @ geom.matrix(part.placement)
     width = params.purchased(seat.key).num("width", positive=True)
     probe = _Probe(params, by_link, poses, frame, width, search)
     rings = {}
@@ -252,7 +243,7 @@ def _gearhead_on_axis(params, parts_by_name, poses, joint, bearing: BearingState
     gear = parts_by_name.get(f"{joint}_gearhead")
     if gear is None:
         return None
-    frame = poses[gear.link] @ _matrix(gear.placement)
+    frame = poses[gear.link] @ geom.matrix(gear.placement)
     axis, origin = np.array(bearing.axis), np.array(bearing.centre)
     if np.linalg.norm(np.cross(frame[:3, 2], axis)) > 1e-6:
         return None

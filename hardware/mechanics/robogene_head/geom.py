@@ -69,6 +69,16 @@ def location(matrix: np.ndarray) -> cq.Location:
     return cq.Location(trsf)
 
 
+def matrix(location: cq.Location) -> np.ndarray:
+    """A CadQuery location as a 4x4 rigid transform (mm): the inverse of `location`."""
+    t = location.wrapped.Transformation()
+    m = np.eye(4)
+    for i in range(3):
+        for j in range(4):
+            m[i, j] = t.Value(i + 1, j + 1)
+    return m
+
+
 def exact_bounds(shape: cq.Shape) -> tuple[np.ndarray, np.ndarray]:
     """(lower corner, upper corner) of the shape's bounding box from its geometry alone. CadQuery's BoundingBox()
     uses a triangulation when the shape has one, so a part meshed earlier in the run (a fresh build exports its STL)

@@ -40,7 +40,7 @@ from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from .. import fits as fits_mod
 from ..assembly import Assembly, Placed
-from ..geom import location
+from ..geom import location, matrix as placement_matrix
 from ..sequence import Sequence, Step
 
 MESH_DEFLECTION = 0.1      # mm: chordal deviation of the meshes; a mesh distance is within 2x of the true one
@@ -94,15 +94,6 @@ class Report:
         return not self.problems
 
 
-def _matrix(location: cq.Location) -> np.ndarray:
-    t = location.wrapped.Transformation()
-    m = np.eye(4)
-    for i in range(3):
-        for j in range(4):
-            m[i, j] = t.Value(i + 1, j + 1)
-    return m
-
-
 class _World:
     """Every part at the zero pose: world shapes, meshes for FCL and bounding boxes, built once."""
 
@@ -119,7 +110,7 @@ class _World:
             self.models[name] = model
             bb = p.shape.BoundingBox()
             self.boxes[name] = (np.array([bb.xmin, bb.ymin, bb.zmin]), np.array([bb.xmax, bb.ymax, bb.zmax]))
-            self.frames[name] = p.world @ _matrix(p.part.placement)
+            self.frames[name] = p.world @ placement_matrix(p.part.placement)
 
     def obj(self, name: str, offset=np.zeros(3)) -> fcl.CollisionObject:
         return fcl.CollisionObject(self.models[name], fcl.Transform(np.eye(3), np.asarray(offset, dtype=float)))
