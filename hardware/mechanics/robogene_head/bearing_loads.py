@@ -15,20 +15,30 @@ SKF's equivalent static load of a deep-groove ball bearing, P0 = 0.6 Fr + 0.5 Fa
 groove ball bearings, "Loads"), is charged with the whole Fa on each bearing, which ever of them locates that way;
 C0 / P0 must reach bearing_loads.static_safety. A joint whose body tips on one bearing fails outright: a deep-groove
 bearing has no moment rating and tilts within its internal clearance before it takes one.
-Left out: the centripetal terms of the joints' speeds, the belt's pull on the yaw shaft, and the gearheads' own
-output bearings on pitch and roll (their ratings are FAULHABER's, not in the parameter file)."""
+A jackshaft's two bearings (jackshafts.find: a shaft turning in a housing of its own link, both found from the parts'
+data) carry the belt's pull on its pulley at the drive's peak torque (torque_path.peak, at the gearhead's shaft, which
+the jackshaft carries 1:1). The belt's effective tension is Te = T / r at the pulley's pitch radius; the installation
+tension keeps the slack span at belt_slack_ratio x Te, so the tight span carries (1 + ratio) Te and the pull on the
+shaft is at most the two spans' sum, (1 + 2 ratio) Te (the spans taken parallel: an upper bound). It acts in the
+belt's plane, the middle of the pulley's width, and splits between the bearings by statics (the pulley overhangs the
+outer one); the belt puts no axial load on them. The pulley's set screws press it onto the shaft: a force inside the
+pulley and shaft, no load on the bearings. Each row is held against C0 like the joints' bearings.
+Left out: the centripetal terms of the joints' speeds, the belt's pull on the yaw shaft, the jackshafts' own weight
+(grams) and the gearheads' own output bearings on pitch and roll (their ratings are FAULHABER's, not in the parameter
+file)."""
 from __future__ import annotations
 
 import itertools
 import json
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
 
-from . import drive_sizing, kinematics
+from . import drive_sizing, jackshafts, kinematics, torque_path
+from .parts import mounts
 from .massprops import MassProps, combine
 
 GRAVITY = 9.80665
@@ -46,7 +56,7 @@ class BearingLoad:
     joint: str
     bearing: str          # the part's name
     key: str              # catalogue key
-    at_mm: float          # along the joint's axis from its origin
+    at_mm: float          # along the joint's axis from its origin (a jackshaft's: from the belt's plane)
     c0_kN: float
     radial_N: float       # at the worst pose
     axial_N: float
@@ -61,6 +71,7 @@ class Report:
     required: float
     loads: list[BearingLoad]
     problems: list[str]     # joints that cannot be checked as built (one bearing carrying a tipping moment)
+    pulls: list = field(default_factory=list)   # BeltPull per jackshaft
 
     @property
     def ok(self) -> bool:
@@ -73,6 +84,10 @@ def _node(params: HeadParameters):
 
 def required_safety(params: HeadParameters) -> float:
     return _node(params).num("static_safety", minimum=1.0)
+
+
+def slack_ratio(params: HeadParameters) -> float:
+    return _node(params).num("belt_slack_ratio", positive=True)
 
 
 def checked_joints(params: HeadParameters) -> list[str]:
@@ -210,24 +225,90 @@ def analyse(params: HeadParameters, parts: list, props: dict[str, MassProps]) ->
             c0 = params.purchased(part.design).num("static_load_rating_kN", positive=True)
             loads.append(BearingLoad(joint, part.name, part.design, t, c0, fr, abs(axial), p0, c0 * 1e3 / p0, case,
                                      {k: round(v, 3) for k, v in q.items()}))
-    return Report(required, loads, problems)
+    jack_loads, jack_problems, pulls = jackshaft_loads(params, parts)
+    return Report(required, loads + jack_loads, problems + jack_problems, pulls)
+
+
+@dataclass(frozen=True)
+class BeltPull:
+    shaft: str
+    joint: str
+    torque_Nm: float         # the drive's peak torque on the jackshaft
+    pitch_radius_mm: float
+    effective_N: float       # Te = T / r
+    pull_N: float            # on the shaft: (1 + 2 slack ratio) Te
+    belt_at_mm: float        # the belt's plane along the shaft's axis
+
+
+def belt_pull(params: HeadParameters, parts: list, shaft: jackshafts.Jackshaft) -> BeltPull:
+    """The belt's pull on a jackshaft's pulley at its drive's peak torque, and where along the axis it acts."""
+    by_name = {p.name: p for p in parts}
+    stage = mounts.stage(params, shaft.joint)
+    radius = mounts.pitch_diameter(params, shaft.joint, int(stage.num("motor_teeth", positive=True))) / 2
+    torque = torque_path.peak(params, shaft.joint).at_gearhead
+    effective = torque / (radius * 1e-3)
+    pulley = jackshafts.frame(params, by_name[shaft.pulley])
+    # the pulley's frame: its body along +z from its inner flange face; the belt runs in the middle of its width
+    plane = pulley[:3, :3] @ np.array([0.0, 0.0, mounts.pulley_width(params, shaft.joint) / 2]) + pulley[:3, 3]
+    return BeltPull(shaft.shaft, shaft.joint, torque, radius, effective,
+                    (1 + 2 * slack_ratio(params)) * effective, shaft.along(plane))
+
+
+def jackshaft_loads(params: HeadParameters, parts: list) -> tuple[list[BearingLoad], list[str], list[BeltPull]]:
+    """Each jackshaft's two bearings under the belt's pull."""
+    by_name = {p.name: p for p in parts}
+    loads, problems, pulls = [], [], []
+    for shaft in jackshafts.find(params, parts):
+        if shaft.joint is None or shaft.pulley is None:
+            problems.append(f"{shaft.shaft}: a jackshaft with " + ("no gearhead on its axis" if shaft.joint is None
+                            else "not one pulley turning with it") + ": its belt's pull cannot be found")
+            continue
+        if len(shaft.bearings) != 2:
+            problems.append(f"{shaft.shaft}: {len(shaft.bearings)} ball bearings: the check splits the belt's pull over two")
+            continue
+        pull = belt_pull(params, parts, shaft)
+        pulls.append(pull)
+        at = []
+        for name in shaft.bearings:
+            part = by_name[name]
+            width = params.purchased(part.design).num("width", positive=True)
+            centre = jackshafts.frame(params, part)[:3, :] @ np.array([0.0, 0.0, width / 2, 1.0])
+            at.append(shaft.along(centre))
+        (t1, t2), tb = at, pull.belt_at_mm
+        if abs(t2 - t1) < 1e-6:
+            problems.append(f"{shaft.shaft}: its two bearings sit at the same place along the axis")
+            continue
+        r2 = pull.pull_N * (tb - t1) / (t2 - t1)
+        for name, t, r in zip(shaft.bearings, at, (pull.pull_N - r2, r2)):
+            part = by_name[name]
+            c0 = params.purchased(part.design).num("static_load_rating_kN", positive=True)
+            fr = abs(r)
+            # no axial load: P0 = max(Fr, 0.6 Fr) = Fr
+            loads.append(BearingLoad(shaft.shaft, name, part.design, round(t - tb, 3), c0, fr, 0.0, fr, c0 * 1e3 / fr,
+                                     f"belt pull {pull.pull_N:.1f} N", {}))
+    return loads, problems, pulls
 
 
 def format_table(report: Report) -> str:
     lines = [f"Bearing loads: worst case over the whole range, required static safety C0/P0 >= {report.required:g}",
-             "joint       bearing                     at (mm)  C0 (kN)  Fr (N)  Fa (N)  P0 (N)  C0/P0  case",
+             "joint / shaft        bearing                               at (mm)  C0 (kN)  Fr (N)  Fa (N)  P0 (N)  C0/P0  case",
              ]
     for b in report.loads:
         flag = "ok" if b.safety >= report.required else "TOO SMALL"
-        lines.append(f"{b.joint:<11} {b.bearing:<27} {b.at_mm:7.1f} {b.c0_kN:8.3f} {b.radial_N:7.1f} {b.axial_N:7.1f} "
+        lines.append(f"{b.joint:<20} {b.bearing:<37} {b.at_mm:7.1f} {b.c0_kN:8.3f} {b.radial_N:7.1f} {b.axial_N:7.1f} "
                      f"{b.p0_N:7.1f} {b.safety:6.1f}  {b.case} {flag}")
+    for p in report.pulls:
+        lines.append(f"{p.shaft}: the {p.joint} belt's pull (1 + 2 x slack ratio) x {p.torque_Nm:.3f} N m / "
+                     f"{p.pitch_radius_mm:.2f} mm = {p.pull_N:.1f} N (Te {p.effective_N:.1f} N), no axial load; "
+                     f"at (mm) from the belt's plane")
     lines += [f"FAIL {p}" for p in report.problems]
     return "\n".join(lines)
 
 
 def dumps(report: Report) -> str:
     return json.dumps({"required_static_safety": report.required, "ok": report.ok, "problems": report.problems,
-                       "bearings": [dict(asdict(b), ok=b.safety >= report.required) for b in report.loads]}, indent=1)
+                       "bearings": [dict(asdict(b), ok=b.safety >= report.required) for b in report.loads],
+                       "belt_pulls": [asdict(p) for p in report.pulls]}, indent=1)
 
 
 def enforce(report: Report) -> None:

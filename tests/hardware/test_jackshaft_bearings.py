@@ -1,0 +1,86 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""A jackshaft's bearings in the bearing-load check (robogene_head/bearing_loads.py, jackshafts.py): the belt's pull at
+the drive's peak torque, split by statics between the two 628/6 with the pulley overhanging the fixed one, each row
+against C0; a jackshaft is found from the parts' data, so a second one in the same shape is picked up with no new code."""
+import math
+
+import numpy as np
+import pytest
+
+from robogene_head import bearing_loads, jackshafts, torque_path
+from robogene_head.geom import exact_bounds
+from robogene_head.parts import head_frame
+from robogene_head.parts.base import Part, loc
+
+from param_variants import edited
+
+
+@pytest.fixture(scope="module")
+def parts(params):
+    return head_frame.build(params)
+
+
+def _centre_y(part):
+    lo, hi = exact_bounds(part.shape)
+    return (lo[1] + hi[1]) / 2
+
+
+def test_the_belt_pull_is_shared_by_statics(params, parts):
+    """Pull = (1 + 2 x 0.3) x T / r: 0.261 N m on the 14T XL pulley's 11.32 mm pitch radius; the belt's plane is the
+    belt envelope's middle, the bearings' places their envelopes' middles (the CAD, not the check's frames)."""
+    loads, problems, [pull] = bearing_loads.jackshaft_loads(params, parts)
+    assert problems == []
+    by_name = {p.name: p for p in parts}
+    torque = torque_path.peak(params, "eyes_tilt").at_gearhead
+    force = 1.6 * torque / (14 * 5.08 / math.pi / 2 * 1e-3)
+    assert pull.pull_N == pytest.approx(force, rel=1e-9)
+    belt = _centre_y(by_name["eyes_tilt_belt"])
+    fixed, floating = (_centre_y(by_name[f"eyes_tilt_jackshaft_bearing_{n}"]) for n in ("fixed", "floating"))
+    # moments about the floating bearing: the fixed one carries the pull times its lever over the bearings' span
+    expect = {"eyes_tilt_jackshaft_bearing_fixed": force * (belt - floating) / (fixed - floating),
+              "eyes_tilt_jackshaft_bearing_floating": force * (belt - fixed) / (fixed - floating)}
+    rows = {b.bearing: b for b in loads}
+    assert set(rows) == set(expect)
+    for name, radial in expect.items():
+        assert rows[name].radial_N == pytest.approx(radial, rel=1e-6)
+        assert rows[name].axial_N == 0 and rows[name].p0_N == rows[name].radial_N
+        assert rows[name].safety == pytest.approx(350 / radial, rel=1e-6)
+    # the pulley overhangs the fixed bearing: it carries the whole pull and what the floating one pulls the other way
+    assert rows["eyes_tilt_jackshaft_bearing_fixed"].radial_N == pytest.approx(
+        force + rows["eyes_tilt_jackshaft_bearing_floating"].radial_N, rel=1e-9)
+    assert all(b.safety >= bearing_loads.required_safety(params) for b in loads)
+
+
+def test_a_weaker_bearing_fails_the_check(tmp_path, parts):
+    """The 628/6 at C0 0.2 kN: the fixed one (109 N) falls to 1.8, under the required 2."""
+    weak = edited(tmp_path, lambda data: data["purchased"]["skf-628-6-2Z"].update(static_load_rating_kN=0.2))
+    loads, _, _ = bearing_loads.jackshaft_loads(weak, parts)
+    report = bearing_loads.Report(bearing_loads.required_safety(weak), loads, [])
+    assert not report.ok
+    with pytest.raises(bearing_loads.BearingLoadError, match=r"eyes_tilt_jackshaft_bearing_fixed \(1\.8"):
+        bearing_loads.enforce(report)
+
+
+def _copied_stage(params, parts, dx):
+    """The tilt's jackshaft stage again, `dx` along x, its gearhead renamed as the yaw's (the finder names the driving
+    joint by its gearhead on the shaft's axis); the real yaw gearhead left out."""
+    names = {"eyes_tilt_jackshaft_housing", "eyes_tilt_jackshaft", "eyes_tilt_jackshaft_bearing_fixed",
+             "eyes_tilt_jackshaft_bearing_floating", "eyes_tilt_coupling", "eyes_tilt_motor_pulley",
+             "eyes_tilt_motor_pulley_set_screw_0", "eyes_tilt_motor_pulley_set_screw_1", "eyes_tilt_gearhead"}
+    copies = []
+    for p in parts:
+        if p.name in names:
+            name = "neck_yaw_gearhead" if p.name == "eyes_tilt_gearhead" else "copy_" + p.name
+            copies.append(Part(name, p.design, p.link, p.kind, p.local, loc(dx) * p.placement, material=p.material,
+                               mass=p.mass, turning=p.turning))
+    return [p for p in parts if p.name != "neck_yaw_gearhead"] + copies
+
+
+def test_a_second_jackshaft_is_picked_up(params, parts):
+    found = jackshafts.find(params, _copied_stage(params, parts, 60.0))
+    assert [(j.shaft, j.joint, j.pulley) for j in found] == [
+        ("eyes_tilt_jackshaft", "eyes_tilt", "eyes_tilt_motor_pulley"),
+        ("copy_eyes_tilt_jackshaft", "neck_yaw", "copy_eyes_tilt_motor_pulley")]
+    assert found[1].bearings == ["copy_eyes_tilt_jackshaft_bearing_floating", "copy_eyes_tilt_jackshaft_bearing_fixed"]
+    assert np.allclose(found[1].origin - found[0].origin, [60, 0, 0])
