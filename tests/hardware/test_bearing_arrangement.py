@@ -46,7 +46,8 @@ def test_the_design_has_one_fixed_and_one_floating_bearing_per_shaft(report):
         ("neck_pitch", "gearhead + floating", "neck_pitch_gearhead"),
         ("neck_roll", "gearhead + floating", "neck_roll_gearhead"),
         ("neck_yaw", "cross-located", "neck_yaw_bearing_lower + neck_yaw_bearing_upper"),
-        ("eyes_tilt", "fixed + floating", "eyes_tilt_bearing_right")]
+        ("eyes_tilt", "fixed + floating", "eyes_tilt_bearing_right"),
+        ("eyes_tilt_jackshaft", "fixed + floating", "eyes_tilt_jackshaft_bearing_fixed")]
 
 
 @pytest.mark.parametrize("name, seat", [("neck_pitch_bearing_right", "neck_upright_right"),

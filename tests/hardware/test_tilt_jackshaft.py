@@ -114,7 +114,7 @@ def test_a_weakened_tilt_stage_fails(tmp_path, edit, weak):
         torque_path.enforce(report)
 
 
-TURNING = ("eyes_tilt_jackshaft", "eyes_tilt_coupling", "eyes_tilt_coupling_screw_0", "eyes_tilt_coupling_screw_1",
+TURNING = ("eyes_tilt_jackshaft", "eyes_tilt_jackshaft_spacer", "eyes_tilt_coupling", "eyes_tilt_coupling_screw_0", "eyes_tilt_coupling_screw_1",
            "eyes_tilt_motor_pulley", "eyes_tilt_motor_pulley_set_screw_0", "eyes_tilt_motor_pulley_set_screw_1")
 STANDING = ("eyes_tilt_jackshaft_housing", "head_side_plate_left", "tilt_housing_screw_0", "tilt_housing_screw_1",
             "eyes_tilt_clamp_screw", "head_back_plate")

@@ -5,8 +5,10 @@
 For every ball bearing that has a housing and a journal (fits.seats), each ring is probed along the bearing's axis,
 both ways: a thin tube over the ring's face (the inner ring from its bore to its face's outer edge, the outer ring
 from the pitch circle, or the catalogue's outer_ring_inside, to its outside) is intersected with the parts that stand
-with that ring's seat (the housing's link for the outer ring, the journal's link for the inner ring); the nearest one
-is the ring's stop on that side and its distance the ring's axial room. A shim is no stop: the probe goes on beyond
+with that ring's seat (the housing's link for the outer ring, the journal's link for the inner ring; on a jackshaft,
+whose shaft turns in a housing of its own link (jackshafts.find), the shaft and what turns with it for the inner ring,
+the rest of the link for the outer ring); the nearest one is the ring's stop on that side and its distance the ring's
+axial room. A shim is no stop: the probe goes on beyond
 it. A ring is located on a side when its stop is within bearing_arrangement.located_within (the CAD is nominal).
   The bearing stops the shaft moving towards +axis when the shaft's side holds its inner ring on the -axis face and
   the housing holds its outer ring on the +axis face; likewise towards -axis. Both ways: a fixed bearing. One way:
@@ -18,8 +20,8 @@ each way, where L is its distance from the fixed bearing along the axis, alpha d
 drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
 Per joint: the joints under gearhead_fixed have the gearhead's own (preloaded) output bearings as their fixed
 bearing, which counts when the gearhead's axis is the shaft's: every ball bearing there must float. The joints under
-cross_located have two bearings each locating one way, in opposite directions. Every other joint has exactly one
-fixed bearing and the rest floating. Anything else fails the build, naming the joint and the bearing."""
+cross_located have two bearings each locating one way, in opposite directions. Every other joint, and every
+jackshaft, has exactly one fixed bearing and the rest floating. Anything else fails the build, naming the joint and the bearing."""
 from __future__ import annotations
 
 import json
@@ -29,7 +31,7 @@ import numpy as np
 
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
 
-from . import fits, geom, kinematics
+from . import fits, geom, jackshafts, kinematics
 from .geom import exact_bounds, location
 
 EDGE = 0.05        # mm the probe keeps inside a ring's face, off the seat's own cylinder
@@ -143,9 +145,8 @@ def _annulus(params: HeadParameters, key: str, ring: str) -> tuple[float, float]
 class _Probe:
     """Parts in one bearing's frame (its axis +z, its faces at z = 0 and z = width), probed along z."""
 
-    def __init__(self, params: HeadParameters, parts_by_link: dict, poses: dict, frame: np.ndarray, width: float,
-                 search: float):
-        self.params, self.by_link, self.poses, self.width, self.search = params, parts_by_link, poses, width, search
+    def __init__(self, params: HeadParameters, poses: dict, frame: np.ndarray, width: float, search: float):
+        self.params, self.poses, self.width, self.search = params, poses, width, search
         self.inverse = np.linalg.inv(frame)
         self.local: dict[str, object] = {}
         self.catalog = params.root.node("purchased")
@@ -159,8 +160,8 @@ class _Probe:
         return part.kind == "purchased" and self.catalog.has(part.design) \
             and self.params.purchased(part.design).text("kind") == "shim"
 
-    def side(self, link: str, radii: tuple[float, float], sign: int, skip: set[str]) -> Side:
-        """The nearest stop of a ring on `link` beyond the ring's face towards sign * z, through shims."""
+    def side(self, candidates: list, radii: tuple[float, float], sign: int, skip: set[str]) -> Side:
+        """The nearest stop of a ring among `candidates` beyond the ring's face towards sign * z, through shims."""
         face = self.width if sign > 0 else 0.0
         end = face + sign * self.search
         free, skip = 0.0, set(skip)
@@ -169,7 +170,7 @@ class _Probe:
             probe = geom.tube("z", 2 * radii[1], 2 * radii[0], z0, z1)
             lo, hi = np.array([-radii[1], -radii[1], z0]), np.array([radii[1], radii[1], z1])
             best = None
-            for part in self.by_link.get(link, []):
+            for part in candidates:
                 if part.name in skip:
                     continue
                 shape = self._shape(part)
@@ -210,15 +211,15 @@ def _direction(v: np.ndarray) -> str:
     return "(" + ", ".join(f"{c:.3f}" for c in v) + ")"
 
 
-def _bearing_state(params, seat, part, joint, by_link, by_name, poses, located, search) -> BearingState:
+def _bearing_state(params, seat, part, joint, stops: dict[str, list], poses, located, search) -> BearingState:
+    """`stops`: per ring ("inner", "outer"), the parts that stand with its seat, among which its stops are found."""
     frame = poses[part.link] @ geom.matrix(part.placement)
     width = params.purchased(seat.key).num("width", positive=True)
-    probe = _Probe(params, by_link, poses, frame, width, search)
+    probe = _Probe(params, poses, frame, width, search)
     rings = {}
     for ring, seat_part in (("inner", seat.journal), ("outer", seat.housing)):
-        link = by_name[seat_part].link
         radii = _annulus(params, seat.key, ring)
-        sides = [probe.side(link, radii, sign, {part.name}) for sign in (-1, 1)]
+        sides = [probe.side(stops[ring], radii, sign, {part.name}) for sign in (-1, 1)]
         least, mean, most = fits.clearance(seat, params, ring)
         rings[ring] = Ring(ring, seat_part, seat.tolerance(ring), mean > 0, round(mean, 4), sides[0], sides[1])
 
@@ -290,21 +291,30 @@ def analyse(params: HeadParameters, parts: list) -> Report:
         by_link.setdefault(p.link, []).append(p)
     by_name = {p.name: p for p in relevant}
     seats = fits.seats(params, parts)
+    shafts = jackshafts.find(params, parts, seats)
+    shaft_of = {b: js for js in shafts for b in js.bearings}
     problems = []
     states: dict[str, list[BearingState]] = {}
     for name, seat in seats.items():
-        joint = _joint_of(params, by_name[seat.housing].link, by_name[seat.journal].link)
-        if joint is None and by_name[seat.journal].turning:
-            # a shaft turning in a housing of its own link (the tilt jackshaft) is no joint of the chain: its two
-            # bearings stand on one link, which the probe's by-link stops cannot tell apart yet (docs/fabricate.md)
+        if name in shaft_of:
+            # a jackshaft turns in a housing of its own link: what turns with it holds the inner rings, what stands
+            # on the link (the housing and what it is screwed to) the outer rings
+            js = shaft_of[name]
+            turning = [by_name[n] for n in js.turning if n in by_name]
+            standing = [p for p in by_link[js.link] if p.name not in js.turning and p.name not in js.bearings]
+            states.setdefault(js.shaft, []).append(_bearing_state(
+                params, seat, by_name[name], js.shaft, {"inner": turning, "outer": standing}, poses, located, search))
             continue
+        joint = _joint_of(params, by_name[seat.housing].link, by_name[seat.journal].link)
         if joint is None:
             problems.append(f"{name}: its housing {seat.housing} and journal {seat.journal} are not the two sides of a joint")
             continue
+        stops = {"inner": by_link[by_name[seat.journal].link], "outer": by_link[by_name[seat.housing].link]}
         states.setdefault(joint, []).append(
-            _bearing_state(params, seat, by_name[name], joint, by_link, by_name, poses, located, search))
+            _bearing_state(params, seat, by_name[name], joint, stops, poses, located, search))
     joints = []
-    for joint in [j for j in CHAIN_JOINTS if j in states or j in gearhead_fixed]:
+    # the chain's joints, then each jackshaft (fixed + floating)
+    for joint in [j for j in CHAIN_JOINTS if j in states or j in gearhead_fixed] + [js.shaft for js in shafts]:
         bearings = states.get(joint, [])
         result = JointResult(joint, "", "", bearings)
         fixed = [b for b in bearings if b.role == "fixed"]

@@ -5,7 +5,8 @@
 A jackshaft is a machined part marked `turning` (a shaft turning in bearings of its own link) that is the journal of
 ball bearings whose housing stands on the same link (fits.seats). What turns with it is the shaft and every other part
 of its link that touches it (the coupling and the pulley clamped on it, their set screws: surfaces within
-clearances.fit_tolerance), the bearings left out: a bearing's inner ring turns, its outer ring stands. Everything else on
+clearances.fit_tolerance) and the screws that touch those (the coupling's), the bearings left out: a bearing's
+inner ring turns, its outer ring stands. Everything else on
 the link stands with the housing. The drive that turns it is the chain joint whose gearhead (`<joint>_gearhead`, the
 drive stack's name for it) lies on the shaft's axis; its pulley is the purchased pulley among the parts that turn."""
 from __future__ import annotations
@@ -19,6 +20,7 @@ from robogene_head_model.params import CHAIN_JOINTS, HeadParameters
 from . import fits, geom, kinematics
 
 ON_AXIS = 1e-3     # mm: a gearhead's axis this close to the shaft's is on it
+FASTENERS = ("screw", "set_screw")
 
 
 @dataclass
@@ -52,6 +54,7 @@ def _kind(params: HeadParameters, part) -> str:
 
 
 def _touching(params: HeadParameters, shaft, candidates: list) -> list:
+    """The candidates whose surfaces come within clearances.fit_tolerance of `shaft`."""
     tol = params.geometry("clearances").num("fit_tolerance", positive=True)
     lo, hi = geom.exact_bounds(shaft.shape)
     out = []
@@ -98,6 +101,10 @@ def find(params: HeadParameters, parts: list, seats: dict | None = None) -> list
         others = [p for p in parts if p.link == shaft.link and p.name != shaft.name and p.name != housing
                   and _kind(params, p) != "bearing"]
         turning = [shaft] + _touching(params, shaft, others)
+        # the screws of what turns turn with it (a screw cannot join what turns to what stands)
+        for part in [p for p in turning[1:]]:
+            rest = [p for p in others if p not in turning and _kind(params, p) in FASTENERS]
+            turning += [p for p in _touching(params, part, rest) if p not in turning]
         pulleys = [p.name for p in turning if _kind(params, p) == "pulley"]
         out.append(Jackshaft(shaft.name, housing, shaft.link, bearings,
                              _driving_joint(params, by_name, poses, origin, axis),

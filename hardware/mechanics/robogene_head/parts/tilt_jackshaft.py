@@ -7,7 +7,10 @@ housing, and the catalogue 14T XL pulley on the jackshaft outside the plate (geo
 Why: the gearhead's 8 mm shaft leaves too little beyond any plate its flange is screwed to for a catalogue
 pulley or coupling hub (docs/fabricate.md, "Torque paths"). Along the axis (head frame y), from the side plate's
 inner face inwards: the fixed bearing, the land, the floating bearing, the coupling, the clamp bore round the
-gearhead's body, which holds it axially too (the belt puts no axial load on it)."""
+gearhead's body, which holds it axially too (the belt puts no axial load on it). The fixed bearing's outer ring sits
+between the land and the side plate, its inner ring between the shaft's collar and a spacer sleeve out through the plate
+to the motor pulley's face; the floating bearing's inner ring is pressed against the collar's other face, its outer ring
+slides in a seat that stops `float_room` short of the land (bearing_arrangement)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -128,7 +131,8 @@ def housing(params: HeadParameters) -> cq.Solid:
     # the cavity reaches 1 mm over the gearhead's front, so its step stands clear of the coupling's end
     tools = [geom.cyl("y", gear.num("diameter"), y0 - 1, lay.gearhead_face, _at(lay)),
              geom.cyl("y", cavity, lay.gearhead_face - 1, lay.floating, _at(lay)),
-             geom.cyl("y", bearing.num("outside"), lay.floating - 0.01, land0, _at(lay)),
+             # the floating bearing's seat runs on into the land: its outer ring keeps room to slide towards it
+             geom.cyl("y", bearing.num("outside"), lay.floating - 0.01, land0 + _float_room(params), _at(lay)),
              geom.cyl("y", bearing.num("inner_ring_outside") + 1.6, land0 - 1, land1 + 1, _at(lay)),
              geom.cyl("y", bearing.num("outside"), land1, lay.inner + 1, _at(lay)),
              # the window the coupling's screws are reached through
@@ -145,6 +149,22 @@ def housing(params: HeadParameters) -> cq.Solid:
     for u, v in n.points("fixings"):
         tools.append(geom.cyl("y", m3, lay.inner - depth - 1, lay.inner + 1, _at(lay, u, v)))
     return geom.single_solid(geom.cut(body, *tools), "tilt jackshaft housing")
+
+
+def _float_room(params: HeadParameters) -> float:
+    n = node(params)
+    room = n.num("float_room", positive=True)
+    if room >= n.num("land"):
+        raise n._fail("float_room", f"{room:g} leaves no land of the {n.num('land'):g} for the fixed bearing")
+    return room
+
+
+def spacer(params: HeadParameters) -> cq.Shape:
+    """The sleeve from the fixed bearing's inner ring out through the side plate to the motor pulley's inner face: the
+    inner ring's outboard stop, the collar's diameter (within the inner ring's face), sliding on the shaft."""
+    lay = layout(params)
+    s = node(params).node("shaft")
+    return geom.tube("y", s.num("collar"), s.num("diameter"), lay.inner, lay.pulley, _at(lay))
 
 
 def _pulley_frame(lay: Layout) -> cq.Location:
@@ -202,7 +222,10 @@ def build(params: HeadParameters) -> list[Part]:
              purchased.bearing(params, "eyes_tilt_jackshaft_bearing_fixed", bearing, "head_frame",
                                loc(lay.x, lay.fixed, lay.z, rx=-90)),
              purchased.bearing(params, "eyes_tilt_jackshaft_bearing_floating", bearing, "head_frame",
-                               loc(lay.x, lay.floating, lay.z, rx=-90))]
+                               loc(lay.x, lay.floating, lay.z, rx=-90)),
+             Part("eyes_tilt_jackshaft_spacer", "eyes_tilt_jackshaft_spacer", "head_frame", "machined", spacer(params),
+                  note="Sleeve, slides on the jackshaft: the fixed bearing's inner ring between it and the collar.",
+                  material="steel", color=ALUMINIUM)]
     key = n.text("coupling")
     # the coupling's frame turned half round its axis, then laid along +y: its +y (the screws' side) up, its -x ahead
     parts.append(Part("eyes_tilt_coupling", key, "head_frame", "purchased", coupling_shape(params),
@@ -239,7 +262,8 @@ def side_plate_tools(params: HeadParameters) -> list[cq.Shape]:
     `slot` long along x (the belt's line is within 11 deg of x) so the housing slides to tension the belt."""
     n, lay = node(params), layout(params)
     slot = n.num("slot", minimum=0)
-    shaft = n.node("shaft").num("diameter") + 2 * params.geometry("bearing_seats").num("shaft_clearance", positive=True)
+    # the spacer sleeve (the collar's diameter) passes the plate round the shaft
+    shaft = n.node("shaft").num("collar") + 2 * params.geometry("bearing_seats").num("shaft_clearance", positive=True)
     m3 = mounts.clearance_hole(params, n.text("fixing_screw"))
     out = []
     for d, (u, v) in [(shaft, (0.0, 0.0)), *[(m3, p) for p in n.points("fixings")]]:
