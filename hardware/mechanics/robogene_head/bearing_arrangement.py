@@ -18,6 +18,7 @@ A floating bearing must let its sliding ring move (the ring whose fit's mean is 
 each way, where L is its distance from the fixed bearing along the axis, alpha dT the growth of an aluminium shaft
 `temperature_difference` warmer than its aluminium housing, and t(L) the ISO 2768-m tolerance of a length L (the
 drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
+A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces).
 Per joint: the joints under gearhead_fixed have the gearhead's own (preloaded) output bearings as their fixed
 bearing, which counts when the gearhead's axis is the shaft's: every ball bearing there must float. The joints under
 cross_located have two bearings each locating one way, in opposite directions. Every other joint, and every
@@ -48,6 +49,7 @@ class BearingArrangementError(RuntimeError):
 class Side:
     gap: float | None     # mm from the ring's face to its stop; None: no stop within the search length
     stop: str             # the stop's part name ("" when none)
+    through: tuple = ()   # the shims between the ring and its stop
 
 
 @dataclass(frozen=True)
@@ -164,7 +166,7 @@ class _Probe:
         """The nearest stop of a ring among `candidates` beyond the ring's face towards sign * z, through shims."""
         face = self.width if sign > 0 else 0.0
         end = face + sign * self.search
-        free, skip = 0.0, set(skip)
+        free, skip, shims = 0.0, set(skip), []
         while (end - face) * sign > 1e-9:
             z0, z1 = sorted((face, end))
             probe = geom.tube("z", 2 * radii[1], 2 * radii[0], z0, z1)
@@ -189,10 +191,11 @@ class _Probe:
                 return Side(None, "")
             gap, part, far = best
             if not self._is_shim(part):
-                return Side(round(free + gap, 4), part.name)
+                return Side(round(free + gap, 4), part.name, tuple(shims))
             free += gap           # a shim is pushed by whatever pushes it: its free room counts, its thickness not
             face = far
             skip.add(part.name)
+            shims.append(part.name)
         return Side(None, "")
 
 
@@ -278,6 +281,39 @@ def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located
     return problems
 
 
+def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: float) -> list[str]:
+    """A retaining ring that bears on a bearing's ring (no shim between) must stay within that ring's face as fitted,
+    or it rubs the shield or seal, which stands while the ring turns (or turns while it stands): a shaft ring's largest
+    diameter (lug_outer_diameter, DIN's d3 max for a DIN 6799 washer) within the inner ring's face
+    (inner_ring_outside), an internal ring's smallest (lug_inner_diameter) outside the outer ring's face's inner edge
+    (outer_ring_inside, else the pitch circle)."""
+    problems = []
+    item = params.purchased(b.key)
+    catalog = params.root.node("purchased")
+    for ring, kind in ((b.inner, "shaft_ring"), (b.outer, "retaining_ring")):
+        for side in (ring.minus, ring.plus):
+            stop = by_name.get(side.stop)
+            if side.gap is None or side.gap > located or side.through or stop is None or stop.kind != "purchased" \
+                    or not catalog.has(stop.design) or params.purchased(stop.design).text("kind") != kind:
+                continue
+            fitted = params.purchased(stop.design)
+            if kind == "shaft_ring":
+                across, face = fitted.num("lug_outer_diameter", positive=True), item.num("inner_ring_outside")
+                if across > face + 1e-9:
+                    problems.append(f"{b.joint}: {stop.name} ({stop.design}, {across:g} across as fitted) bears on "
+                                    f"{b.bearing}'s inner ring, whose face is {face:g} across ({b.key}): it reaches "
+                                    f"onto the shield; put a spacer between them or take a smaller ring")
+            else:
+                inside = fitted.num("lug_inner_diameter", positive=True)
+                edge = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
+                    (item.num("bore") + item.num("outside")) / 2
+                if inside < edge - 1e-9:
+                    problems.append(f"{b.joint}: {stop.name} ({stop.design}, its lugs in to {inside:g} as fitted) bears on "
+                                    f"{b.bearing}'s outer ring, whose face starts at {edge:g} ({b.key}): it reaches "
+                                    f"onto the shield; put a shim between them")
+    return problems
+
+
 def analyse(params: HeadParameters, parts: list) -> Report:
     node = _node(params)
     located = node.num("located_within", positive=True)
@@ -317,6 +353,8 @@ def analyse(params: HeadParameters, parts: list) -> Report:
     for joint in [j for j in CHAIN_JOINTS if j in states or j in gearhead_fixed] + [js.shaft for js in shafts]:
         bearings = states.get(joint, [])
         result = JointResult(joint, "", "", bearings)
+        for b in bearings:
+            result.problems += ring_faces(params, b, by_name, located)
         fixed = [b for b in bearings if b.role == "fixed"]
         one_way = [b for b in bearings if b.role == "one way"]
         floating = [b for b in bearings if b.role == "floating"]

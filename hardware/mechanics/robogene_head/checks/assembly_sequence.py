@@ -36,10 +36,10 @@ from dataclasses import dataclass, field
 import cadquery as cq
 import fcl
 import numpy as np
-from OCP.BRepExtrema import BRepExtrema_DistShapeShape
 
 from .. import fits as fits_mod
 from ..assembly import Assembly, Placed
+from .. import geom
 from ..geom import location, matrix as placement_matrix
 from ..sequence import Sequence, Step
 
@@ -155,20 +155,15 @@ def _pairs(s1: cq.Shape, s2: cq.Shape, reach: float):
 def _exact(s1: cq.Shape, s2: cq.Shape) -> float:
     best = np.inf
     for a, b in _pairs(s1, s2, 1.0):
-        tool = BRepExtrema_DistShapeShape(a.wrapped, b.wrapped)
-        tool.Perform()
-        if not tool.IsDone():
-            raise AssemblyCheckError("BRepExtrema failed")
-        best = min(best, tool.Value())
+        try:
+            best = min(best, geom.distance(a, b))
+        except RuntimeError as exc:
+            raise AssemblyCheckError(str(exc)) from None
     return best if np.isfinite(best) else 1.0   # nothing within 1 mm: at least that far
 
 
 def _overlap(s1: cq.Shape, s2: cq.Shape) -> float:
     return sum(a.intersect(b).Volume() for a, b in _pairs(s1, s2, 0.0))
-
-
-def _mesh_distance(o1, o2) -> float:
-    return fcl.distance(o1, o2, fcl.DistanceRequest(), fcl.DistanceResult())
 
 
 class _Checker:
@@ -184,7 +179,7 @@ class _Checker:
         gap = _box_gap(box, self.w.boxes[other])
         if gap > 3.0:
             return gap
-        return _mesh_distance(self.w.obj(moving, offset), self.w.obj(other)) - 2 * MESH_DEFLECTION
+        return geom.mesh_distance(self.w.obj(moving, offset), self.w.obj(other)) - 2 * MESH_DEFLECTION
 
     def _exact_at(self, moving: str, offset, other: str) -> tuple[float, float]:
         """(exact distance, common volume when touching). A KiCad board (hundreds of component models) is measured
@@ -194,7 +189,7 @@ class _Checker:
         if key in self.exact_cache:
             return self.exact_cache[key]
         if moving in self.boards or other in self.boards:
-            d = _mesh_distance(self.w.obj(moving, offset), self.w.obj(other))
+            d = geom.mesh_distance(self.w.obj(moving, offset), self.w.obj(other))
             self.exact_cache[key] = (max(d, 0.0), 0.0)
         else:
             a, b = self.w.shape(moving, offset), self.w.shape(other)
@@ -411,7 +406,7 @@ class _Checker:
                 hi = np.maximum(start + direction * a, start + direction * b) + dia / 2
                 if _box_gap((lo, hi), box) > 3.0:
                     continue
-                d = _mesh_distance(cyl, self.w.obj(n)) - 2 * MESH_DEFLECTION
+                d = geom.mesh_distance(cyl, self.w.obj(n)) - 2 * MESH_DEFLECTION
                 if d < MIN_STEP and n in self.boards and d <= 0:
                     result.problems.append(Problem(step.label, f"{label}: the {dia:g} mm tool along the axis hits {n}"))
                     return

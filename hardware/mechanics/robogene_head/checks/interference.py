@@ -125,10 +125,6 @@ class _Meshes:
         return out, boxes
 
 
-def _mesh_distance(o1, o2) -> float:
-    return fcl.distance(o1, o2, fcl.DistanceRequest(), fcl.DistanceResult())
-
-
 def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
           static_checked_elsewhere: frozenset[str] = frozenset()) -> Report:
     """static_checked_elsewhere: parts whose pairs within their own link another check has measured (the mated plugs:
@@ -182,7 +178,7 @@ def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
 def _pair(pa: Placed, pb: Placed, oa, ob, fit_tol: float, exact_below: float):
     """(distance or None when above NEAR, common volume). Near the wanted minimum clearance the distance is
     measured exactly, so a LOW verdict never rests on the mesh approximation."""
-    mesh_dist = _mesh_distance(oa, ob)
+    mesh_dist = geom.mesh_distance(oa, ob)
     if mesh_dist > NEAR + 2 * MESH_DEFLECTION:
         return None, 0.0
     if mesh_dist > max(fit_tol + 2 * MESH_DEFLECTION, exact_below):
