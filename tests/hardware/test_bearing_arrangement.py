@@ -106,7 +106,11 @@ def test_a_61800_clamped_again_fails(params, parts):
     ring = purchased.retaining_ring(params, "old_ring", "din472-19x1", b.link, b.placement * loc(z=w))
     report = _analyse(params, parts, [shoulder, ring])
     assert not report.ok
-    assert report.failures == ["neck_pitch: neck_pitch_bearing_right locates the shaft one way besides "
+    # and the DIN 472's lugs, straight on the outer ring with no shim, reach in over its face onto the seal
+    assert report.failures == ["neck_pitch: old_ring (din472-19x1, its lugs in to 10.4 as fitted) bears on "
+                               "neck_pitch_bearing_right's outer ring, whose face starts at 14.5 (skf-61800-2RS): it "
+                               "reaches onto its shield or seal; put a shim between them",
+                               "neck_pitch: neck_pitch_bearing_right locates the shaft one way besides "
                                "neck_pitch_gearhead's output bearings (the fixed bearing): they fight; it must float"]
     with pytest.raises(arrangement.BearingArrangementError, match="neck_pitch: neck_pitch_bearing_right locates"):
         arrangement.enforce(report)
@@ -159,6 +163,6 @@ def test_the_package_reports_the_arrangement(fab):
     assert data["ok"] and data["problems"] == []
     assert {j["joint"]: j["arrangement"] for j in data["joints"]} == {
         "neck_pitch": "gearhead + floating", "neck_roll": "gearhead + floating", "neck_yaw": "cross-located",
-        "eyes_tilt": "fixed + floating"}
+        "eyes_tilt": "fixed + floating", "eyes_tilt_jackshaft": "fixed + floating"}
     text = (fab / "reports" / "bearing-arrangement.txt").read_text()
     assert "neck_pitch_bearing_right (skf-61800-2RS): floating" in text

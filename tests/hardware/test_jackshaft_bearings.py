@@ -16,6 +16,7 @@ from robogene_head import bearing_loads, geom, jackshafts, torque_path
 from robogene_head.geom import exact_bounds
 from robogene_head.parts import head_frame, tilt_jackshaft
 from robogene_head.parts.base import Part, loc
+from robogene_head_model.params import ParameterError
 
 from param_variants import edited
 
@@ -155,3 +156,9 @@ def test_a_second_jackshaft_is_checked_too(params, parts):
     assert [(j.joint, j.fixed) for j in report.joints][-2:] == [
         ("eyes_tilt_jackshaft", "eyes_tilt_jackshaft_bearing_fixed"),
         ("copy_eyes_tilt_jackshaft", "copy_eyes_tilt_jackshaft_bearing_fixed")]
+
+
+def test_a_float_room_that_eats_the_land_is_refused(tmp_path):
+    bad = edited(tmp_path, lambda data: data["geometry"]["tilt_jackshaft"].update(float_room=3.5))
+    with pytest.raises(ParameterError, match=r"geometry\.tilt_jackshaft\.float_room: 3\.5 leaves no land"):
+        tilt_jackshaft.housing(bad)

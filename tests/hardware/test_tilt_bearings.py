@@ -5,7 +5,9 @@ shim and DIN 472 ring) and on the journal (collar and DIN 6799 clip), the left o
 its outer ring free to slide in the left plate's through-bore; the seat refuses what would rub or has no room."""
 import pytest
 
+from robogene_head import bearing_arrangement as arrangement
 from robogene_head import bearing_loads, geom, kinematics, massprops
+from robogene_head.parts.base import Part
 from robogene_head.geom import distance, location
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck, tilt_bearings
 from robogene_head_model.params import ParameterError
@@ -86,10 +88,25 @@ def test_the_journal_carries_the_magnet_holder_beyond_the_clip_and_the_boss(para
     assert distance(bracket, boss) >= minimum - 1e-6
 
 
+# DIN 6799 size 5, the tilt's clip before: groove 5, s 0.7, up to 11.3 across as fitted (the DIN 6799 table as
+# transcribed in the FreeCAD Fasteners workbench's din6799def.csv)
+SIZE_5 = {"kind": "shaft_ring", "shaft": 6, "groove_diameter": 5, "groove_width": 0.74, "thickness": 0.7,
+          "groove_edge": 1.2, "outside_diameter": 11.3, "lug_outer_diameter": 11.3, "mass": 0.0002}
+
+
+def _size_5_clip(data):
+    data["purchased"]["din6799-5"] = dict(SIZE_5)
+    data["geometry"]["tilt_bearings"]["clip"] = "din6799-5"
+
+
+def _wide_clip_thin_shim(data):
+    data["purchased"]["din6799-4"].update(outside_diameter=10.5, lug_outer_diameter=10.5)
+    data["geometry"]["tilt_bearings"]["spacer"] = "din988-13x19x0.5"
+
+
 @pytest.mark.parametrize("edit, message", [
-    (lambda d: d["purchased"]["din6799-5"].update(outside_diameter=12, lug_outer_diameter=12),
-     r"geometry\.tilt_bearings\.clip: din6799-5 \(12 across\) reaches beyond the skf-626-2Z's inner ring"),
-    (lambda d: d["geometry"]["tilt_bearings"].update(spacer="din988-13x19x0.5"),
+    (_size_5_clip, r"geometry\.tilt_bearings\.clip: din6799-5 \(11\.3 across\) reaches beyond the skf-626-2Z's inner ring"),
+    (_wide_clip_thin_shim,
      r"geometry\.tilt_bearings\.spacer: din988-13x19x0\.5 \(0\.5 thick\) leaves the din472-19x1 ring's lugs"),
     (lambda d: d["geometry"]["tilt_bearings"].update(collar=12), r"geometry\.tilt_bearings\.collar: 12 must be"),
     (lambda d: d["geometry"]["tilt_bearings"]["boss"].update(thickness=3),
@@ -107,3 +124,28 @@ def test_the_tilt_bearings_carry_the_eyes(params, assembly):
     tilt = [b for b in report.loads if b.joint == "eyes_tilt"]
     assert sorted(b.bearing for b in tilt) == ["eyes_tilt_bearing_left", "eyes_tilt_bearing_right"]
     assert all(b.safety >= report.required for b in tilt) and report.ok
+
+
+def test_the_clip_stays_within_the_inner_rings_face(params):
+    """The DIN 6799 size 4 on the 6 mm journal: 9.3 across as fitted (d3 max) against the 626's 11 mm face (da max)."""
+    parts = head_frame.build(params) + eyes.build(params)
+    report = arrangement.analyse(params, parts)
+    right = next(b for j in report.joints for b in j.bearings if b.bearing == "eyes_tilt_bearing_right")
+    assert right.inner.plus.stop == "eyes_tilt_clip" or right.inner.minus.stop == "eyes_tilt_clip"
+    assert arrangement.ring_faces(params, right, {p.name: p for p in parts}, report.located_within) == []
+    clip = params.purchased(params.geometry("tilt_bearings").text("clip"))
+    assert clip.num("lug_outer_diameter") == 9.3 <= params.purchased("skf-626-2Z").num("inner_ring_outside")
+
+
+def test_a_size_5_clip_straight_on_the_626_fails_the_arrangement_check(params, tmp_path):
+    """The old design's washer where the clip is: 11.3 across as fitted, over the 626's 11 mm inner ring face onto the
+    shield; the measured check names it (the seat's own rule refuses it too, above)."""
+    old = edited(tmp_path, lambda data: data["purchased"].update({"din6799-5": dict(SIZE_5)}))
+    parts = [Part(p.name, "din6799-5", p.link, p.kind, p.local, p.placement, mass=p.mass) if p.name == "eyes_tilt_clip"
+             else p for p in head_frame.build(old) + eyes.build(old)]
+    report = arrangement.analyse(old, parts)
+    assert report.failures == ["eyes_tilt: eyes_tilt_clip (din6799-5, 11.3 across as fitted) bears on "
+                               "eyes_tilt_bearing_right's inner ring, whose face is 11 across (skf-626-2Z): it reaches "
+                               "onto its shield or seal; put a spacer between them or take a smaller ring"]
+    with pytest.raises(arrangement.BearingArrangementError, match="eyes_tilt_clip \\(din6799-5, 11.3 across"):
+        arrangement.enforce(report)

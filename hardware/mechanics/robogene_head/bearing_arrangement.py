@@ -302,7 +302,7 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
                 if across > face + 1e-9:
                     problems.append(f"{b.joint}: {stop.name} ({stop.design}, {across:g} across as fitted) bears on "
                                     f"{b.bearing}'s inner ring, whose face is {face:g} across ({b.key}): it reaches "
-                                    f"onto the shield; put a spacer between them or take a smaller ring")
+                                    f"onto its shield or seal; put a spacer between them or take a smaller ring")
             else:
                 inside = fitted.num("lug_inner_diameter", positive=True)
                 edge = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
@@ -310,7 +310,7 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
                 if inside < edge - 1e-9:
                     problems.append(f"{b.joint}: {stop.name} ({stop.design}, its lugs in to {inside:g} as fitted) bears on "
                                     f"{b.bearing}'s outer ring, whose face starts at {edge:g} ({b.key}): it reaches "
-                                    f"onto the shield; put a shim between them")
+                                    f"onto its shield or seal; put a shim between them")
     return problems
 
 
