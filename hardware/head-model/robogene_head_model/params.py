@@ -29,7 +29,7 @@ PURCHASED_KINDS = {
     "shaft_ring": ("shaft", "groove_diameter", "groove_width", "thickness", "groove_edge", "outside_diameter",
                    "lug_outer_diameter", "mass"),
     "shim": ("bore", "outside", "thickness", "mass"),
-    # a shaft coupling: across, long, its two bores (the clamp screws: robogene_head/parts/tilt_jackshaft.py)
+    # a shaft coupling: across, long, its two bores (the clamp screws: robogene_head/parts/jackshaft.py)
     "coupling": ("diameter", "length", "offset", "seat", "mass"),
     # a catalogue timing pulley, drawn from its stage (geometry.pulleys)
     "pulley": ("mass",),
