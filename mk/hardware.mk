@@ -41,7 +41,7 @@ $(FAB)/manifest.json: $(HW_SOURCES) $(HW_BOARD_DEP) $(wildcard $(BOARD_BOMS) $(B
 	$(HW_PY) -m robogene_head.fab --out $(FAB) $(foreach b,$(BOARD_BOMS),--board-bom $(b)) \
 	  $(if $(BOARD_STEP),--board-step $(BOARD_STEP)) $(if $(strip $(BATCH)),--batch $(strip $(BATCH)))
 
-.PHONY: fab test-hardware test-head-model FORCE
+.PHONY: fab docs-pictures test-hardware test-head-model FORCE
 ALL_TARGETS  += fab
 TEST_TARGETS += test-head-model test-hardware
 fab: $(FAB)/manifest.json
@@ -53,7 +53,12 @@ test-head-model: $(VENV)/.stamp
 test-hardware: $(FAB)/manifest.json
 	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider tests/hardware
 
+# The docs' copies of the package's pictures (docs/images/pictures.yaml; test_docs_pictures fails when one is stale)
+docs-pictures: $(FAB)/manifest.json
+	$(HW_PY) -m robogene_head.docs_pictures --fab $(FAB) --docs $(ROOT)/docs/images
+
 HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders);" \
               "                BATCH=N prices the BOM for N heads" \
               "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests" \
-              "make test-head-model  the head model package shared by the CAD and the code generator"
+              "make test-head-model  the head model package shared by the CAD and the code generator" \
+              "make docs-pictures  copy the package's renders the docs show into docs/images (docs/images/pictures.yaml)"
