@@ -2,12 +2,14 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The eye-pan drive trade study (docs/fabricate.md, "Eyes for stereo"): each candidate's published figures put
 through the real budget (robogene_head/eye_accuracy.py) on an edited parameter file, asserting the outcome the
-docs' table states, so the table cannot drift from the code. The pans' drive in the parameter file is not changed."""
+docs' table states, so the table cannot drift from the code; and the room the eye module leaves a candidate,
+measured in the assembly over the tilt's range. The pans' drive in the parameter file is not changed."""
 import math
 
+import numpy as np
 import pytest
 
-from robogene_head import eye_accuracy
+from robogene_head import eye_accuracy, geom
 from robogene_head_model.params import ParameterError
 
 from param_variants import edited
@@ -134,3 +136,67 @@ def test_bad_joint_sensor_input_is_named(tmp_path, edit, message):
         edit(d)
     with pytest.raises(ParameterError, match=message):
         _budget(tmp_path, "bad", both)
+
+
+TILTS = (-30, -15, 0, 15, 30)          # the eye tilt's range; the pans turn about their own axes, which this keeps
+
+
+@pytest.fixture(scope="module")
+def in_tilt_frame(assembly):
+    """Every part at each tilt angle, in the tilt frame (the pan axes stand at (0, +-34) along z, the eye centres at
+    z = 0): (link, name, shape)."""
+    posed = {}
+    for tilt in TILTS:
+        placed = assembly.pose({"eyes_tilt": tilt})
+        frame = next(p.world for p in placed if p.part.link == "eyes_tilt_link")
+        back = geom.location(np.linalg.inv(frame))
+        posed[tilt] = [(p.part.link, p.part.name, p.shape.moved(back)) for p in placed]
+    return posed
+
+
+def _pan_axes(params):
+    return {f"{side}_eye": sign * params.baseline / 2 for side, sign in (("left", 1), ("right", -1))}
+
+
+def test_the_room_above_each_eye_for_a_sensor(params, in_tilt_frame):
+    """Where a magnet in the cup's top would face a sensor held over the eye: from the cup's top up to the first
+    part of another link within the AS5048A board's half-width (11 mm) and the clearance of the pan axis: 6.0 mm,
+    the head's top bar at tilt 0."""
+    r = params.geometry("eyes").num("cup_radius")
+    clear = params.geometry("clearances").num("minimum")
+    for eye, y in _pan_axes(params).items():
+        column = geom.cyl("z", 2 * (11 + clear), r, r + 100, (0, y))
+        lowest = []
+        for tilt, shapes in in_tilt_frame.items():
+            for link, name, shape in shapes:
+                if link in ("eyes_tilt_link", eye):
+                    continue
+                common = shape.intersect(column)
+                if common.Volume() > 1e-6:
+                    lowest.append((geom.exact_bounds(common)[0][2] - r, name, tilt))
+        room, name, tilt = min(lowest)
+        assert room == pytest.approx(6.0, abs=0.05) and name == "head_top_bar" and tilt == 0, (eye, lowest[:3])
+
+
+@pytest.mark.parametrize("band, room, limit", [
+    ((-40, -24), 25.61, "eyes_tilt_stop_pin_"),         # the 16 mm under the tilt frame's plate
+    ((-56, -40), 15.32, "neck_yaw_encoder_bracket"),    # 16 to 32 mm under it
+    ((-74, -56), 9.99, "face_plate"),                   # down to the end of today's encoder
+])
+def test_the_room_around_each_pan_drive(params, in_tilt_frame, band, room, limit):
+    """How far from each pan axis the nearest part of another link comes, per height under the tilt frame's
+    plate, over the tilt's range: what a drive hung there may fill (less the clearance)."""
+    for eye, y in _pan_axes(params).items():
+        axis = geom.cyl("z", 0.02, band[0], band[1], (0, y))
+        nearest = []
+        for tilt, shapes in in_tilt_frame.items():
+            for link, name, shape in shapes:
+                if link in ("eyes_tilt_link", eye):
+                    continue
+                lo, hi = geom.exact_bounds(shape)
+                if lo[0] > 30 or hi[0] < -30 or lo[1] > y + 30 or hi[1] < y - 30 or lo[2] > band[1] + 30 \
+                        or hi[2] < band[0] - 30:
+                    continue
+                nearest.append((geom.distance(axis, shape), name, tilt))
+        found = min(nearest)
+        assert found[0] == pytest.approx(room, abs=0.01) and found[1].startswith(limit), (eye, found)
