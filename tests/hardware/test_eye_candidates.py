@@ -144,18 +144,35 @@ TILTS = (-30, -15, 0, 15, 30)          # the eye tilt's range; the pans turn abo
 @pytest.fixture(scope="module")
 def in_tilt_frame(assembly):
     """Every part at each tilt angle, in the tilt frame (the pan axes stand at (0, +-34) along z, the eye centres at
-    z = 0): (link, name, shape)."""
+    z = 0): (link, name, shape, its exact bounds)."""
     posed = {}
     for tilt in TILTS:
         placed = assembly.pose({"eyes_tilt": tilt})
         frame = next(p.world for p in placed if p.part.link == "eyes_tilt_link")
         back = geom.location(np.linalg.inv(frame))
-        posed[tilt] = [(p.part.link, p.part.name, p.shape.moved(back)) for p in placed]
+        posed[tilt] = [(p.part.link, p.part.name, shape, *geom.exact_bounds(shape))
+                       for p in placed for shape in [p.shape.moved(back)]]
     return posed
 
 
 def _pan_axes(params):
     return {f"{side}_eye": sign * params.baseline / 2 for side, sign in (("left", 1), ("right", -1))}
+
+
+def _touching(in_tilt_frame, eye, column):
+    """(name, tilt) of every part of another link that the column touches at some tilt (exact distances: the
+    face plate is a mesh solid, on which booleans are not reliable)."""
+    lo, hi = geom.exact_bounds(column)
+    hits = []
+    for tilt, shapes in in_tilt_frame.items():
+        for link, name, shape, slo, shi in shapes:
+            if link in ("eyes_tilt_link", eye):
+                continue
+            if np.any(slo > hi) or np.any(shi < lo):
+                continue
+            if geom.distance(column, shape) < 1e-6:
+                hits.append((name, tilt))
+    return hits
 
 
 def test_the_room_above_each_eye_for_a_sensor(params, in_tilt_frame):
@@ -165,17 +182,9 @@ def test_the_room_above_each_eye_for_a_sensor(params, in_tilt_frame):
     r = params.geometry("eyes").num("cup_radius")
     clear = params.geometry("clearances").num("minimum")
     for eye, y in _pan_axes(params).items():
-        column = geom.cyl("z", 2 * (11 + clear), r, r + 100, (0, y))
-        lowest = []
-        for tilt, shapes in in_tilt_frame.items():
-            for link, name, shape in shapes:
-                if link in ("eyes_tilt_link", eye):
-                    continue
-                common = shape.intersect(column)
-                if common.Volume() > 1e-6:
-                    lowest.append((geom.exact_bounds(common)[0][2] - r, name, tilt))
-        room, name, tilt = min(lowest)
-        assert room == pytest.approx(6.0, abs=0.05) and name == "head_top_bar" and tilt == 0, (eye, lowest[:3])
+        assert _touching(in_tilt_frame, eye, geom.cyl("z", 2 * (11 + clear), r, r + 5.95, (0, y))) == [], eye
+        assert _touching(in_tilt_frame, eye, geom.cyl("z", 2 * (11 + clear), r, r + 6.05, (0, y))) == \
+            [("head_top_bar", 0)], eye
 
 
 @pytest.mark.parametrize("band, room, limit", [
@@ -190,13 +199,22 @@ def test_the_room_around_each_pan_drive(params, in_tilt_frame, band, room, limit
         axis = geom.cyl("z", 0.02, band[0], band[1], (0, y))
         nearest = []
         for tilt, shapes in in_tilt_frame.items():
-            for link, name, shape in shapes:
+            for link, name, shape, lo, hi in shapes:
                 if link in ("eyes_tilt_link", eye):
                     continue
-                lo, hi = geom.exact_bounds(shape)
                 if lo[0] > 30 or hi[0] < -30 or lo[1] > y + 30 or hi[1] < y - 30 or lo[2] > band[1] + 30 \
                         or hi[2] < band[0] - 30:
                     continue
                 nearest.append((geom.distance(axis, shape), name, tilt))
         found = min(nearest)
         assert found[0] == pytest.approx(room, abs=0.01) and found[1].startswith(limit), (eye, found)
+
+
+def test_the_room_under_each_pan_drive(params, in_tilt_frame):
+    """Under today's encoder (its end 50 mm under the tilt frame's plate), within its 17 mm: 5.3 mm to the face
+    plate at +30 deg of tilt."""
+    eyes = params.geometry("eyes")
+    end = -eyes.num("cup_radius") - eyes.num("gap") - eyes.node("tilt_frame").num("plate_thickness") - 50
+    for eye, y in _pan_axes(params).items():
+        assert _touching(in_tilt_frame, eye, geom.cyl("z", 17, end - 5.27, end, (0, y))) == [], eye
+        assert _touching(in_tilt_frame, eye, geom.cyl("z", 17, end - 5.29, end, (0, y))) == [("face_plate", 30)], eye
