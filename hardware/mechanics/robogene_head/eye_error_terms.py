@@ -16,7 +16,18 @@ Homing against a hard stop (homing.<joint>.method: hard_stop) adds the stop's of
 the lug onto its pin with at most the homing run's own current limit (motor_control.homing.<control joint>
 .current_limit, which the firmware holds the motors to while they seek the stop); gearhead and lug wind up under it. That wind-up is the
 same at every power-up as far as the stall torque is; its mean is calibrated with the rest, and
-eye_accuracy.homing_torque_spread of it (the stall torque's spread) is not repeatable, plus one encoder count."""
+eye_accuracy.homing_torque_spread of it (the stall torque's spread) is not repeatable, plus one encoder count.
+
+A pan with an absolute sensor at the joint (drives.<pan>.joint_encoder) is read there instead: its position loop
+closes on the sensor, so the gear's backlash, hysteresis and wind-up and the motor encoder's count lie inside the
+loop, and the sensor gives the zero at power-up (homing.<pan>.method: absolute_encoder, no stop pressed). What counts
+then is the sensor's own error, from its purchased: entry (sensed_terms):
+  bits                one count: 360 / 2^bits (none when averaged readings are dithered by the noise)
+  noise_rms_deg       the reading's noise (1 sigma): eye_accuracy.joint_sensor.coverage sigma of the mean of its
+                      .readings readings is counted
+  nonlinearity_deg    the reading's error over the turn at a given magnet placement: a function of angle, calibrated
+  nonlinearity_drift_deg  how far that error moves with temperature after the calibration: counted (not published:
+                      unknown)"""
 from __future__ import annotations
 
 import math
@@ -95,9 +106,49 @@ def homing_torque(params: HeadParameters, joint: str) -> float:
     return kt * homing_current(params, joint) * 1e-3 * drive_limits.reduction(params, joint) * eta
 
 
+def sensed_terms(params: HeadParameters, joint: str) -> list[Term]:
+    """The terms of a pan read at the joint by its absolute sensor (drives.<pan>.joint_encoder)."""
+    drive = params.drive(joint)
+    key = drive.text("joint_encoder")
+    homing = params.root.node("homing").node(joint)
+    method = homing.text("method")
+    if method != "absolute_encoder":
+        raise homing._fail("method", f"a pan read at the joint takes its zero from its sensor ({key}): expected "
+                                     f"'absolute_encoder', got {method!r}")
+    sensor = params.purchased(key)
+    rule = params.root.node("eye_accuracy").node("joint_sensor")
+    readings = rule.num("readings", minimum=1)
+    coverage = rule.num("coverage", positive=True)
+
+    def published(name: str) -> float | None:
+        return sensor.num(name, minimum=0) if sensor.has(name) else None
+
+    noise = published("noise_rms_deg")
+    count = 360.0 / 2 ** sensor.num("bits", positive=True)
+    # Averaged readings with a noise of half a count or more dither the codes: their mean resolves below a count,
+    # and the noise figure, measured on the output codes, carries the quantisation. One reading keeps a whole count.
+    dithered = readings > 1 and noise is not None and noise >= count / 2
+    unpublished = f"{key}: not published"
+    return [
+        Term("sensor_count", "one count of the joint sensor" + (" (dithered by its noise: in sensor_noise)"
+                                                                 if dithered else ""),
+             0.0 if dithered else count, False, f"{key}.bits"),
+        Term("sensor_noise", f"the joint sensor's noise, {coverage:g} sigma of the mean of {readings:g} readings",
+             None if noise is None else coverage * noise / math.sqrt(readings), False,
+             f"{key}.noise_rms_deg; eye_accuracy.joint_sensor" if noise is not None else unpublished),
+        Term("sensor_linearity", "the joint sensor's non-linearity over the turn", published("nonlinearity_deg"), True,
+             f"{key}.nonlinearity_deg" if sensor.has("nonlinearity_deg") else unpublished),
+        Term("sensor_drift", "its non-linearity's change with temperature since the calibration",
+             published("nonlinearity_drift_deg"), False,
+             f"{key}.nonlinearity_drift_deg" if sensor.has("nonlinearity_drift_deg") else unpublished),
+    ]
+
+
 def terms(params: HeadParameters, joint: str, dynamic_Nm: float) -> list[Term]:
     """The terms of one pan; dynamic_Nm: the peak torque the gearhead passes to the eye (drive sizing's load)."""
     drive = params.drive(joint)
+    if drive.has("joint_encoder"):
+        return sensed_terms(params, joint)
     gear_key, enc_key = drive.text("gearhead"), drive.text("encoder")
     gear = params.purchased(gear_key)
     belt = drive_limits.belt_ratio(params, joint)
