@@ -14,7 +14,7 @@ import pytest
 from robogene_head import bearing_arrangement as arrangement
 from robogene_head import bearing_loads, geom, jackshafts, torque_path
 from robogene_head.geom import exact_bounds
-from robogene_head.parts import head_frame, tilt_jackshaft
+from robogene_head.parts import head_frame, jackshaft, tilt_jackshaft
 from robogene_head.parts.base import Part, loc
 from robogene_head_model.params import ParameterError
 
@@ -161,4 +161,4 @@ def test_a_second_jackshaft_is_checked_too(params, parts):
 def test_a_float_room_that_eats_the_land_is_refused(tmp_path):
     bad = edited(tmp_path, lambda data: data["geometry"]["tilt_jackshaft"].update(float_room=3.5))
     with pytest.raises(ParameterError, match=r"geometry\.tilt_jackshaft\.float_room: 3\.5 leaves no land"):
-        tilt_jackshaft.housing(bad)
+        jackshaft.housing(bad, tilt_jackshaft.stage(bad))
