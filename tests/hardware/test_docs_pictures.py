@@ -3,6 +3,7 @@
 """The docs' pictures are the package's (docs/images/pictures.yaml): each still looks like what the package renders,
 so a design change cannot leave an old picture in docs/fabricate.md (one stood there for a session, drawn before
 the pitch bearing moved). `make docs-pictures` refreshes them."""
+import json
 import re
 from pathlib import Path
 
@@ -66,3 +67,22 @@ def test_an_unknown_step_is_named(fab, tmp_path):
     bad.write_text("x.png: {render: a.png, step: 'main: b'}\n")
     with pytest.raises(dp.PictureError, match="x.png: expected exactly one"):
         dp.load(bad)
+
+
+def test_the_assembly_report_names_each_steps_picture(fab):
+    """The report, not a second parser of its labels, says which picture is a step's: each one it names is drawn,
+    and every drawn step is named once."""
+    steps = json.loads((fab / "reports" / "assembly.json").read_text())["steps"]
+    named = [s["picture"] for s in steps]
+    drawn = sorted(p.name for p in (fab / "assembly" / "steps").glob("*.png"))
+    assert sorted(named) == drawn
+    first = steps[0]
+    assert dp.step_picture(fab, f"{first['context']}: {first['name']}").name == first["picture"]
+
+
+def test_a_report_from_an_older_build_is_named(tmp_path):
+    (tmp_path / "reports").mkdir()
+    (tmp_path / "reports" / "assembly.json").write_text(json.dumps(
+        {"steps": [{"step": "step 1 'base'", "context": "main"}]}))
+    with pytest.raises(dp.PictureError, match="run make fab"):
+        dp.step_picture(tmp_path, "main: base")

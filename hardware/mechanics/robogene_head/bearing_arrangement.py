@@ -216,7 +216,7 @@ def _direction(v: np.ndarray) -> str:
 
 def _bearing_state(params, seat, part, joint, stops: dict[str, list], poses, located, search) -> BearingState:
     """`stops`: per ring ("inner", "outer"), the parts that stand with its seat, among which its stops are found."""
-    frame = poses[part.link] @ geom.matrix(part.placement)
+    frame = geom.part_frame(poses, part)
     width = params.purchased(seat.key).num("width", positive=True)
     probe = _Probe(params, poses, frame, width, search)
     rings = {}
@@ -247,7 +247,7 @@ def _gearhead_on_axis(params, parts_by_name, poses, joint, bearing: BearingState
     gear = parts_by_name.get(f"{joint}_gearhead")
     if gear is None:
         return None
-    frame = poses[gear.link] @ geom.matrix(gear.placement)
+    frame = geom.part_frame(poses, gear)
     axis, origin = np.array(bearing.axis), np.array(bearing.centre)
     if np.linalg.norm(np.cross(frame[:3, 2], axis)) > 1e-6:
         return None

@@ -37,7 +37,7 @@ import numpy as np
 
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
 
-from . import drive_sizing, jackshafts, kinematics, torque_path
+from . import drive_sizing, geom, jackshafts, kinematics, torque_path
 from .parts import mounts
 from .massprops import MassProps, combine
 
@@ -113,17 +113,10 @@ def bearings_on_axis(params: HeadParameters, parts: list, joint: str) -> list[tu
         world = pose[:3, :3] @ np.array([centre.x, centre.y, centre.z]) + pose[:3, 3]
         d = world - origin
         off = d - np.dot(d, axis) * axis
-        ring_axis = _ring_axis(part, pose)
+        ring_axis = geom.part_frame(poses, part)[:3, 2]     # the bearing envelope's axis (its frame's z)
         if np.linalg.norm(off) < ON_AXIS and abs(abs(np.dot(ring_axis, axis)) - 1) < 1e-6:
             found.append((float(np.dot(d, axis)), part))
     return sorted(found, key=lambda f: f[0])
-
-
-def _ring_axis(part, pose: np.ndarray) -> np.ndarray:
-    """The bearing envelope's axis (its design frame's z) in the world frame."""
-    m = part.placement.wrapped.Transformation()
-    z = np.array([m.Value(1, 3), m.Value(2, 3), m.Value(3, 3)])
-    return pose[:3, :3] @ z
 
 
 def _distal(params: HeadParameters, joint: str) -> list[str]:

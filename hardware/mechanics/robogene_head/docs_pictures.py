@@ -10,17 +10,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import re
 import shutil
 import sys
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import yaml
 from PIL import Image
-
-from .render_steps import file_name
 
 CHANNEL_STEP = 48          # of 255: well above rendering noise, well below a part's colour against the background
 MAX_CHANGED = 0.01         # the share of changed pixels a copy may have and still count as the package's picture
@@ -41,18 +37,17 @@ def load(path: Path) -> dict[str, dict[str, str]]:
 
 
 def step_picture(fab: Path, ref: str) -> Path:
-    """The package's picture of the step `<context>: <name>`, found by its place in the checked sequence."""
+    """The package's picture of the step `<context>: <name>`, as the assembly check's report names it."""
     context, sep, name = ref.partition(": ")
     if not sep:
         raise PictureError(f"step {ref!r}: expected '<context>: <name>'")
-    steps = json.loads((fab / "reports" / "assembly.json").read_text())["steps"]
-    for index, step in enumerate(steps, 1):
-        # the check's label: "[<context> ]step <number> '<name>'"
-        label = re.fullmatch(r"(?:\S+ )?step (\d+) '(.*)'", step["step"])
-        if label and step["context"] == context and label.group(2) == name:
-            placed = SimpleNamespace(context=context, number=int(label.group(1)))
-            return fab / "assembly" / "steps" / file_name(index, placed)
-    raise PictureError(f"step {ref!r}: no such step in {fab / 'reports' / 'assembly.json'}")
+    report = fab / "reports" / "assembly.json"
+    for step in json.loads(report.read_text())["steps"]:
+        if "picture" not in step:
+            raise PictureError(f"{report}: its steps name no pictures (written by an older build): run make fab")
+        if step["context"] == context and step["name"] == name:
+            return fab / "assembly" / "steps" / step["picture"]
+    raise PictureError(f"step {ref!r}: no such step in {report}")
 
 
 def source(fab: Path, entry: dict[str, str]) -> Path:

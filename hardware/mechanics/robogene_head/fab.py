@@ -352,7 +352,7 @@ def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, asse
         cache.record("assembly-sequence", key)
     folder = out / "assembly" / "steps"
     steps = seq.steps()
-    pictures = [folder / render_steps.file_name(i + 1, s) for i, s in enumerate(steps)]
+    pictures = [folder / s.picture(i + 1) for i, s in enumerate(steps)]
     page = folder / "README.md"
     picture_key = digest(key, _source_hash(render_steps))
     if not cache.fresh("assembly-steps", picture_key, pictures + [page]):

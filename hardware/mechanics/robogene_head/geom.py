@@ -80,6 +80,11 @@ def matrix(location: cq.Location) -> np.ndarray:
     return m
 
 
+def part_frame(poses: dict[str, np.ndarray], part) -> np.ndarray:
+    """A part's design frame in the world (4x4, mm): its link's pose (`poses`, by link) after its placement."""
+    return poses[part.link] @ matrix(part.placement)
+
+
 def exact_bounds(shape: cq.Shape) -> tuple[np.ndarray, np.ndarray]:
     """(lower corner, upper corner) of the shape's bounding box from its geometry alone. CadQuery's BoundingBox()
     uses a triangulation when the shape has one, so a part meshed earlier in the run (a fresh build exports its STL)

@@ -43,7 +43,7 @@ class Jackshaft:
 def frame(params: HeadParameters, part, poses: dict | None = None) -> np.ndarray:
     """A part's design frame in the world at the zero pose (4x4, mm)."""
     poses = poses if poses is not None else kinematics.link_poses(params, {})
-    return poses[part.link] @ geom.matrix(part.placement)
+    return geom.part_frame(poses, part)
 
 
 def _kind(params: HeadParameters, part) -> str:

@@ -21,10 +21,6 @@ ARROW = (0.85, 0.1, 0.1)
 SIZE = (720, 540)
 
 
-def file_name(index: int, step: Step) -> str:
-    return f"{index:02d}-{step.context}-{step.number:02d}.png"
-
-
 class _Meshes:
     def __init__(self, assembly: Assembly):
         self.placed = {p.part.name: p for p in assembly.pose({})}
@@ -122,7 +118,7 @@ def render_all(assembly: Assembly, sequence: Sequence, folder: Path, progress=No
         if progress:
             progress(i, len(steps), step.label)
         here = placed.setdefault(step.context, [])
-        target = folder / file_name(i + 1, step)
+        target = folder / step.picture(i + 1)
         render_step(meshes, step, list(here), target)
         out.append(target)
         here.extend(step.parts + step.fasteners)
@@ -144,7 +140,7 @@ def instructions(sequence: Sequence, report: dict) -> str:
             lines += ["", f"## {'Final assembly' if current == 'main' else 'Subassembly: ' + current}", ""]
         lines.append(f"### {i + 1}. {step.name}")
         lines.append("")
-        lines.append(f"![{step.label}]({file_name(i + 1, step)})")
+        lines.append(f"![{step.label}]({step.picture(i + 1)})")
         lines.append("")
         what = f"subassembly `{step.subassembly}`" if step.subassembly else ", ".join(f"`{p}`" for p in step.parts)
         if step.fixture:

@@ -57,6 +57,10 @@ class Step:
         where = "" if self.context == "main" else f"{self.context} "
         return f"{where}step {self.number} '{self.name}'"
 
+    def picture(self, index: int) -> str:
+        """The file name of its picture (assembly/steps/), `index` its 1-based place in the whole sequence."""
+        return f"{index:02d}-{self.context}-{self.number:02d}.png"
+
 
 @dataclass
 class Sequence:

@@ -70,6 +70,8 @@ class StepResult:
     label: str
     context: str
     parts: list[str]
+    name: str = ""
+    picture: str = ""                  # its picture's file name (render_steps draws it)
     path_length: float = 0.0
     samples: int = 0
     closest: float | None = None       # closest approach to a non-fit part while moving (mm)
@@ -471,7 +473,8 @@ def check(params, assembly: Assembly, sequence: Sequence, progress=None) -> Repo
         if progress:
             progress(i, len(steps), step.label)
         here = placed.setdefault(step.context, [])
-        result = StepResult(step.label, step.context, list(step.parts) + list(step.fasteners))
+        result = StepResult(step.label, step.context, list(step.parts) + list(step.fasteners), step.name,
+                            step.picture(i + 1))
         if step.fixture:
             result.note = "held (the first part of its context)"
         elif step.flexible:
@@ -513,6 +516,6 @@ def format_report(report: Report) -> str:
 def report_json(report: Report) -> dict:
     return {"ok": report.ok, "seconds": round(report.seconds, 1), "cpu_seconds": round(report.cpu_seconds, 1),
             "problems": [str(p) for p in report.problems],
-            "steps": [{"step": s.label, "context": s.context, "parts": s.parts, "path_mm": round(s.path_length, 1),
+            "steps": [{"step": s.label, "context": s.context, "name": s.name, "picture": s.picture, "parts": s.parts, "path_mm": round(s.path_length, 1),
                        "samples": s.samples, "closest_mm": s.closest, "closest_pair": s.closest_to, "note": s.note,
                        "tools": s.tools, "problems": [p.what for p in s.problems]} for s in report.steps]}
