@@ -239,6 +239,22 @@ def test_all_axes_needs_a_joint(tmp_path):
     assert err == f"{tmp_path}/i.yaml:11:5: error: 'setThing' has no joint argument, so it cannot have an all-axes form"
 
 
+def test_reduce_needs_bool_results(tmp_path):
+    """reduce: all makes one value of every axis's (YARP's [get] [dons]); only a bool can be and-ed."""
+    err = one_error(tmp_path, {"i.yaml": iface("""\
+        - name: getThing
+          doc: Get.
+          wire: [get, thng]
+          args:
+            - {name: j, type: joint}
+          results:
+            - {name: v, type: float64}
+          all_axes: {name: getThings, wire: [get, thgs], reduce: all}
+        """)})
+    assert err == (f"{tmp_path}/i.yaml:13:60: error: 'reduce: all' makes one value of every axis's, which needs "
+                   "bool results; 'getThing' returns float64")
+
+
 def test_echo_past_the_request(tmp_path):
     err = one_error(tmp_path, {"i.yaml": iface("""\
         - name: getThing

@@ -119,7 +119,8 @@ def test_paper_section_3_3_through_client_bytes_and_server():
     encs = client.getEncoders()
     assert encs[0] == pytest.approx(0.125 + 5 * 3.95, abs=0.01)
     assert encs[1] == pytest.approx(0.125 + 5 * 3.95, abs=0.01)
-    assert client.checkMotionDoneAll() == [False, False, True]
+    assert [client.checkMotionDone(j) for j in range(3)] == [False, False, True]
+    assert client.checkMotionDoneAll() is False  # one value for all axes, as YARP answers [get] [dons]
     assert client.getControlModes() == [ControlMode.POSITION, ControlMode.VELOCITY, ControlMode.POSITION]
     assert client.setControlMode(2, ControlMode.PWM) is False
     assert client.getTorque(7) is None  # no such axis

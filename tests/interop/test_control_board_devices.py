@@ -117,6 +117,18 @@ def test_yarps_remote_controlboard_drives_robogene_dev(yarpserver, yarp, ours, p
     last = seen[-1]
     assert len(last) == 4 and last[1] > 0.0 and last[2] == last[3] == 0.0, last
 
+    # YARP's client asks whether every axis is done ([get] [dons]) and reads one int, as its own server sends:
+    # not while joint 1 runs, and once every axis is stopped. (It read our old per-axis list as "not done".)
+    def all_done() -> str:
+        theirs.send("[get] [dons]")
+        sent[0] += 1
+        return value_of(responses(theirs, sent[0])[-1])
+    assert all_done() == "0"
+    theirs.send("[set] [stos]")
+    sent[0] += 1
+    assert responses(theirs, sent[0])[-1] == "[ok]"
+    theirs.wait_until("YARP's client sees every axis done", lambda: all_done() == "1", 10)
+
 
 PID_POS_1 = "(6000.0 500.0 5.0 1333.0 1333.0 0.0 8.0 0.5 -0.5 1.0)"
 

@@ -80,7 +80,6 @@ def test_every_recorded_message_decodes_and_reencodes_byte_for_byte(name):
 # 3.12.3's reply shape, and any other difference in success fails the test.
 KNOWN_DIFFERENCES = {"controlboard": {
     # Of the servers (docs/interop.md, "YARP 3.12.3 by fixtures"):
-    "[get] [dons]": "YARP answers one int, all axes' motion done together; we answer one per axis",
     "[set] [vmo] 1 0.25": "YARP's server refuses a single-joint velocity move by RPC (its client streams it)",
     "[get] [torq] [axes]": "YARP 3.12.3's server answers [fail]; ours the number of axes",
     # Of the devices: test_motor and YARP's fakeMotionControl are different simulations.
@@ -213,8 +212,6 @@ class Replay:
 
 # Where our client does not take YARP 3.12.3's reply as the generic rule says: (fixture, method) -> why.
 CLIENT_REFUSES = {
-    ("controlboard_rpc.txt", "checkMotionDoneAll"):
-        "YARP answers [get] [dons] with one int for all axes; our client expects one per axis (docs/interop.md)",
     # fakeFrameGrabber refuses every control, and 3.12.3's server still sends the value it never set:
     ("grabber_rpc.txt", "hasFeature"): "an uninitialised bool (32), which our client refuses as not a bool",
     ("grabber_rpc.txt", "getActive"): "the same",

@@ -392,7 +392,14 @@ class _Checker:
                 self.error(doc.key_mark(apath), f"'{raw['name']}' has defaults, which its "
                            "all-axes form cannot carry")
                 return []
-            aresults = [_replace(r, per_axis=True) for r in results]
+            reduce = all_raw.get("reduce")
+            if reduce is not None and not (results and all(r.type.name == "bool" for r in results)):
+                self.error(doc.mark(apath + ("reduce",)), f"'reduce: {reduce}' makes one value of every axis's, "
+                           f"which needs bool results; '{raw['name']}' returns "
+                           f"{', '.join(r.type.name for r in results) or 'nothing'}")
+                return []
+            # reduce: all -- the wire carries one value, true when every axis's is (YARP's [get] [dons])
+            aresults = [_replace(r, per_axis=reduce is None) for r in results]
             aecho = self._echo(doc, apath, all_raw.get("echo", raw.get("echo")), awire,
                                len(aargs), all_raw["name"])
             if aecho is False:

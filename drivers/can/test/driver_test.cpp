@@ -64,8 +64,8 @@ TEST_F(DriverOnVirtualBus, EveryJointFollowsPositionThenVelocityCommandsWithEnco
     EXPECT_GT(mid[static_cast<std::size_t>(j)] * targets[static_cast<std::size_t>(j)], 0.0) << head_.joints[static_cast<std::size_t>(j)].name;
   }
   ASSERT_TRUE(testing::eventually(6.0, [&] {
-    std::vector<bool> done;
-    return pos_->checkMotionDone(done) && std::all_of(done.begin(), done.end(), [](bool d) { return d; });
+    bool done = false;
+    return pos_->checkMotionDone(done) && done;
   }));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   std::vector<double> at;

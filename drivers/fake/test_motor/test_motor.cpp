@@ -221,8 +221,11 @@ bool TestMotor::checkMotionDone(int j, bool& flag) {
   });
 }
 
-bool TestMotor::checkMotionDone(std::vector<bool>& flags) {
-  return read_all(flags, [](const AxisMotion& a, std::size_t) { return a.done(); });
+bool TestMotor::checkMotionDone(bool& flag) {
+  std::vector<bool> each;
+  if (!read_all(each, [](const AxisMotion& a, std::size_t) { return a.done(); })) return false;
+  flag = std::all_of(each.begin(), each.end(), [](bool d) { return d; });
+  return true;
 }
 
 bool TestMotor::setRefSpeed(int j, double sp) {

@@ -77,7 +77,7 @@ class TestMotor final : public DeviceDriver,
   bool relativeMove(int j, double delta) override;
   bool relativeMove(const std::vector<double>& deltas) override;
   bool checkMotionDone(int j, bool& flag) override;
-  bool checkMotionDone(std::vector<bool>& flags) override;
+  bool checkMotionDone(bool& flag) override;
   bool setRefSpeed(int j, double sp) override;
   bool setRefSpeeds(const std::vector<double>& sps) override;
   bool getRefSpeed(int j, double& sp) override;

@@ -293,13 +293,13 @@ bool RobogeneCan::relativeMove(const std::vector<double>& deltas) {
 bool RobogeneCan::checkMotionDone(int j, bool& flag) {
   return guarded("checkMotionDone", j, [&] { flag = std::get<MotionDoneReply>(request(j, MotionDone{}).message).done; });
 }
-bool RobogeneCan::checkMotionDone(std::vector<bool>& flags) {
-  flags.assign(head_.joints.size(), false);
+bool RobogeneCan::checkMotionDone(bool& flag) {
   bool ok = true;
-  for (std::size_t j = 0; j < flags.size(); ++j) {
+  flag = true;
+  for (std::size_t j = 0; j < head_.joints.size(); ++j) {  // every axis asked, so a failing board shows
     bool f = false;
     ok = checkMotionDone(static_cast<int>(j), f) && ok;
-    flags[j] = f;
+    flag = flag && f;
   }
   return ok;
 }

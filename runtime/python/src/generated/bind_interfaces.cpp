@@ -636,12 +636,12 @@ class PyIPositionControl : public IPositionControl {
       return false;
     }
   }
-  bool checkMotionDone(std::vector<bool>& flags) override {
+  bool checkMotionDone(bool& flag) override {
     py::gil_scoped_acquire gil;
     try {
       py::object result = python_method(static_cast<const IPositionControl*>(this), "IPositionControl", "checkMotionDoneAll")();
       if (result.is_none()) return false;
-      flags = python_value<std::vector<bool>>(result, "IPositionControl.checkMotionDoneAll");
+      flag = python_value<bool>(result, "IPositionControl.checkMotionDoneAll");
       return true;
     } catch (py::error_already_set& e) {
       report_device_error(e, "IPositionControl.checkMotionDoneAll");
@@ -1753,17 +1753,17 @@ void bind_generated_interfaces(py::module_& m) {
           "Whether one axis has reached its target.")
       .def(
           "checkMotionDoneAll",
-          [](IPositionControl& self) -> std::optional<std::vector<bool>> {
-            std::vector<bool> flags{};
+          [](IPositionControl& self) -> std::optional<bool> {
+            bool flag{};
             bool done_ = false;
             {
               py::gil_scoped_release release;
-              done_ = self.checkMotionDone(flags);
+              done_ = self.checkMotionDone(flag);
             }
             if (!done_) return std::nullopt;
-            return flags;
+            return flag;
           },
-          "Whether each axis has reached its target.")
+          "Whether every axis has reached its target: one value for all, as YARP answers.")
       .def(
           "setRefSpeed",
           [](IPositionControl& self, Joint j, double sp) -> bool {

@@ -196,11 +196,11 @@ bool ControlboardClient::checkMotionDone(int j, bool& flag) {
   return read(reply[2], flag);
 }
 
-bool ControlboardClient::checkMotionDone(std::vector<bool>& flags) {
+bool ControlboardClient::checkMotionDone(bool& flag) {
   Bottle request = start({"get", "dons"});
   Bottle reply;
   if (!query(request, reply, 1)) return false;
-  return read(reply[2], flags);
+  return read(reply[2], flag);
 }
 
 bool ControlboardClient::setRefSpeed(int j, double sp) {

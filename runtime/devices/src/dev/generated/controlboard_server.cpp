@@ -683,15 +683,15 @@ bool h_get_don(const ControlboardServer::Interfaces& d, const Bottle& req, Bottl
 // [get] [dons]: IPositionControl.checkMotionDoneAll
 bool h_get_dons(const ControlboardServer::Interfaces& d, const Bottle& req, Bottle& reply) {
   if (req.size() != 2) return false;
-  std::vector<bool> flags{};
+  bool flag{};
   bool ok = false;
   if (d.ipositioncontrol) {
-    ok = d.ipositioncontrol->checkMotionDone(flags);
+    ok = d.ipositioncontrol->checkMotionDone(flag);
   }
   if (!ok) return false;
   reply.add(Value::vocab(vocab("is")));
   reply.add(req[1]);
-  write(reply, flags);
+  write(reply, flag);
   return true;
 }
 
@@ -1187,7 +1187,7 @@ const char* const kUsage[] = {
     "[set] [rel] $j $delta  # Start moving one axis by an offset from its current target. (delta: deg)",
     "[set] [rels] $deltas  # Start moving every axis by an offset from its current target. (deltas: deg)",
     "[get] [don] $j  # Whether one axis has reached its target.",
-    "[get] [dons]  # Whether each axis has reached its target.",
+    "[get] [dons]  # Whether every axis has reached its target: one value for all, as YARP answers.",
     "[set] [vel] $j $sp  # The speed at which later position moves of one axis travel. (sp: deg/s)",
     "[set] [vels] $sps  # The speeds at which later position moves of each axis travel. (sps: deg/s)",
     "[set] [acc] $j $acc  # The acceleration with which later moves of one axis speed up and slow down. (acc: deg/s^2)",

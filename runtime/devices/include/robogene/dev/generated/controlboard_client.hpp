@@ -70,7 +70,7 @@ class ControlboardClient : public IEncoders, public IPositionControl, public IVe
 
   bool checkMotionDone(int j, bool& flag) override;
 
-  bool checkMotionDone(std::vector<bool>& flags) override;
+  bool checkMotionDone(bool& flag) override;
 
   bool setRefSpeed(int j, double sp) override;
 

@@ -25,7 +25,7 @@ namespace robogene::dev {
 class ControlboardServer {
  public:
   static constexpr const char* kServiceName = "controlboard";
-  static constexpr const char* kFingerprint = "b78167ee398e4351";
+  static constexpr const char* kFingerprint = "0a79d4f6112e8e79";
 
   // The interfaces of the device this server can reach (nullptr: not implemented).
   struct Interfaces {

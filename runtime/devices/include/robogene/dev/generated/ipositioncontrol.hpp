@@ -19,7 +19,7 @@ namespace robogene::dev {
 class IPositionControl {
  public:
   static constexpr const char* kInterfaceName = "IPositionControl";
-  static constexpr const char* kFingerprint = "672a8a3f1511859a";
+  static constexpr const char* kFingerprint = "f8453322e0536704";
   static constexpr int kVersion = 1;
 
   virtual ~IPositionControl() = default;
@@ -54,10 +54,10 @@ class IPositionControl {
   // Wire: [get] [don].
   virtual bool checkMotionDone(int j, bool& flag) = 0;
 
-  // Whether each axis has reached its target.
-  // out flags
-  // Wire: [get] [dons], one value per axis.
-  virtual bool checkMotionDone(std::vector<bool>& flags) = 0;
+  // Whether every axis has reached its target: one value for all, as YARP answers.
+  // out flag
+  // Wire: [get] [dons], one value for all axes.
+  virtual bool checkMotionDone(bool& flag) = 0;
 
   // The speed at which later position moves of one axis travel.
   // in j; in sp [deg/s]
