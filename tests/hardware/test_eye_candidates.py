@@ -111,6 +111,21 @@ def test_a_joint_sensor_with_a_known_drift_is_counted_to_the_budget(tmp_path):
     assert not _budget(tmp_path, "large", _joint_sensor(64, drift=0.03)).ok
 
 
+def test_the_report_keeps_its_columns_for_the_sensor_terms(tmp_path):
+    """sensor_linearity is 16 characters: the term column (14 wide before) let it push its row's numbers two
+    characters right of the others'. Every row's deg column ends where the header's does, one space after the
+    longest name."""
+    e = _budget(tmp_path, "report", _joint_sensor(64))
+    lines = eye_accuracy.format_report(e).splitlines()
+    header = next(line for line in lines if line.startswith("  term "))
+    end = header.index(" deg") + len(" deg")
+    assert end == 2 + len("sensor_linearity") + 1 + 13
+    rows = {t.name: next(line for line in lines if line.startswith(f"  {t.name} ")) for t in e.terms}
+    for t in e.terms:
+        deg = "not published" if t.deg is None else f"{t.deg:.4f}"
+        assert rows[t.name][:end].endswith(f" {deg}") and rows[t.name][end:end + 2] == "  ", rows[t.name]
+
+
 def test_a_pan_read_at_the_joint_takes_its_zero_from_its_sensor(tmp_path):
     def edit(d):
         _joint_sensor(64)(d)
