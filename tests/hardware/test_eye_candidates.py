@@ -134,7 +134,7 @@ def test_a_measured_drift_is_counted_instead_of_the_bound(tmp_path):
     assert not _budget(tmp_path, "large", _joint_sensor(64, drift=0.03)).ok
 
 
-# Infineon TLE5012B (data sheet Rev. 2.x, features): 15-bit angle (0.01 deg), "max. 1.0 deg angle error over lifetime
+# Infineon TLE5012B (data sheet Rev. 2.1, features): 15-bit angle (0.01 deg), "max. 1.0 deg angle error over lifetime
 # and temperature-range with activated auto-calibration"; its angle noise not in the pages reached.
 TLE5012B = {"bits": 15, "accuracy_over_temperature_deg": 1.0}
 # MagnTek MT6835 (its data sheet's figures as the MT6835_EVAL report's table 1 gives them; the data sheet not
@@ -287,3 +287,28 @@ def test_the_room_under_each_pan_drive(params, in_tilt_frame):
     for eye, y in _pan_axes(params).items():
         assert _touching(in_tilt_frame, eye, geom.cyl("z", 17, end - 5.27, end, (0, y))) == [], eye
         assert _touching(in_tilt_frame, eye, geom.cyl("z", 17, end - 5.29, end, (0, y))) == [("face_plate", 30)], eye
+
+
+def test_the_room_for_a_ring_round_each_pan_shaft(params, in_tilt_frame):
+    """A sensor ring round the pan shaft (an AksIM-2, Orbis or Netzer DS type) can only lie on the tilt frame's plate
+    under the cup: the shaft leaves the gearhead under the plate and goes straight into the eye hub. Flat, from the
+    hub's neck to the stop pins' inner side, each less the clearance, and the clearance above the plate, it has about
+    0.1 mm before the cup's underside comes within the clearance: no ring fits without raising the cup. The plate, its
+    pins and the cup keep their places over the tilt, and the ring is round about the pan axis: tilt 0 holds them."""
+    eyes = params.geometry("eyes")
+    clear = params.geometry("clearances").num("minimum")
+    stop = eyes.node("hard_stop")
+    inner = eyes.node("hub").num("neck_diameter") / 2 + clear
+    outer = stop.num("radius") - params.purchased(stop.text("pin")).num("diameter") / 2 - clear
+    bottom = -eyes.num("cup_radius") - eyes.num("gap") + clear
+    assert (inner, outer, bottom) == pytest.approx((5.3, 11.7, -19.2))
+    for eye, y in _pan_axes(params).items():
+        def within_clearance(height):
+            ring = geom.cyl("z", 2 * outer, bottom, bottom + height, (0, y)).cut(
+                geom.cyl("z", 2 * inner, bottom - 1, bottom + height + 1, (0, y)))
+            lo, hi = geom.exact_bounds(ring)
+            return sorted(name for _, name, shape, slo, shi in in_tilt_frame[0]
+                          if not (np.any(slo > hi + clear) or np.any(shi < lo - clear))
+                          and geom.distance(ring, shape) < clear - 1e-6)
+        assert within_clearance(0.05) == [], eye
+        assert within_clearance(0.2) == [f"{eye}_cup"], eye
