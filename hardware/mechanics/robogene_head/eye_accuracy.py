@@ -98,14 +98,15 @@ def _deg(value: float | None) -> str:
 
 
 def format_report(e: EyeBudget) -> str:
+    name = max(len("term"), *(len(t.name) for t in e.terms))     # the longest term name sets the column
     lines = [f"Eye accuracy at {e.distance_mm:g} mm: allowed depth error {e.depth_error_mm:g} mm -> vergence error "
              f"{e.vergence_allowed_deg:.4f} deg, {e.per_eye_allowed_deg:.4f} deg per eye (after a per-eye calibration: "
              f"only what is not repeatable counts).",
              f"Terms per eye at the joint, {e.joint} (the larger):",
-             f"  {'term':<14} {'deg':>13}  {'':<14}  what (source)"]
+             f"  {'term':<{name}} {'deg':>13}  {'':<14}  what (source)"]
     for t in e.terms:
         kind = "calibrated" if t.repeatable else "counted"
-        lines.append(f"  {t.name:<14} {_deg(t.deg):>13}  {kind:<14}  {t.what} ({t.source})")
+        lines.append(f"  {t.name:<{name}} {_deg(t.deg):>13}  {kind:<14}  {t.what} ({t.source})")
     if e.per_eye_deg is None:
         lines.append(f"Counted per eye: at least {e.known_per_eye_deg:.4f} deg; unknown: {', '.join(e.unknown)}.")
     else:

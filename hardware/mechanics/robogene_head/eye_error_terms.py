@@ -26,8 +26,12 @@ then is the sensor's own error, from its purchased: entry (sensed_terms):
   noise_rms_deg       the reading's noise (1 sigma): eye_accuracy.joint_sensor.coverage sigma of the mean of its
                       .readings readings is counted
   nonlinearity_deg    the reading's error over the turn at a given magnet placement: a function of angle, calibrated
-  nonlinearity_drift_deg  how far that error moves with temperature after the calibration: counted (not published:
-                      unknown)"""
+  nonlinearity_drift_deg  how far that error moves with temperature after the calibration: counted
+  accuracy_over_temperature_deg  the maker's bound (+-) on the reading's error over the sensor's whole operating
+                      temperature range, relative to its zero (after the maker's or the host's calibration, as the
+                      maker states it). Whatever the temperatures at calibration and in use, two readings within +-a
+                      differ by at most 2a: without a published drift, twice this bounds it and is counted. Neither
+                      published: the drift is unknown."""
 from __future__ import annotations
 
 import math
@@ -129,6 +133,13 @@ def sensed_terms(params: HeadParameters, joint: str) -> list[Term]:
     # and the noise figure, measured on the output codes, carries the quantisation. One reading keeps a whole count.
     dithered = readings > 1 and noise is not None and noise >= count / 2
     unpublished = f"{key}: not published"
+    drift, drift_source, drift_what = published("nonlinearity_drift_deg"), f"{key}.nonlinearity_drift_deg", ""
+    if drift is None and sensor.has("accuracy_over_temperature_deg"):
+        drift = 2 * sensor.num("accuracy_over_temperature_deg", minimum=0)
+        drift_source = f"2 x {key}.accuracy_over_temperature_deg"
+        drift_what = " (at most twice the maker's accuracy over temperature)"
+    elif drift is None:
+        drift_source = unpublished
     return [
         Term("sensor_count", "one count of the joint sensor" + (" (dithered by its noise: in sensor_noise)"
                                                                  if dithered else ""),
@@ -138,9 +149,8 @@ def sensed_terms(params: HeadParameters, joint: str) -> list[Term]:
              f"{key}.noise_rms_deg; eye_accuracy.joint_sensor" if noise is not None else unpublished),
         Term("sensor_linearity", "the joint sensor's non-linearity over the turn", published("nonlinearity_deg"), True,
              f"{key}.nonlinearity_deg" if sensor.has("nonlinearity_deg") else unpublished),
-        Term("sensor_drift", "its non-linearity's change with temperature since the calibration",
-             published("nonlinearity_drift_deg"), False,
-             f"{key}.nonlinearity_drift_deg" if sensor.has("nonlinearity_drift_deg") else unpublished),
+        Term("sensor_drift", "its non-linearity's change with temperature since the calibration" + drift_what,
+             drift, False, drift_source),
     ]
 
 
