@@ -1218,7 +1218,7 @@ class IPositionControl:
     """
     Move axes to target positions along trajectories shaped by a reference speed and a reference acceleration ("position control").
     """
-    FINGERPRINT: typing.ClassVar[str] = '672a8a3f1511859a'
+    FINGERPRINT: typing.ClassVar[str] = 'f8453322e0536704'
     INTERFACE_NAME: typing.ClassVar[str] = 'IPositionControl'
     VERSION: typing.ClassVar[int] = 1
     def __init__(self) -> None:
@@ -1227,9 +1227,9 @@ class IPositionControl:
         """
         Whether one axis has reached its target.
         """
-    def checkMotionDoneAll(self) -> list[bool] | None:
+    def checkMotionDoneAll(self) -> bool | None:
         """
-        Whether each axis has reached its target.
+        Whether every axis has reached its target: one value for all, as YARP answers.
         """
     def getAxes(self) -> int | None:
         """
@@ -1486,7 +1486,7 @@ class ControlboardServer:
     """
     The control board service's RPC dispatch over one device, without ports.
     """
-    FINGERPRINT: typing.ClassVar[str] = 'b78167ee398e4351'
+    FINGERPRINT: typing.ClassVar[str] = '0a79d4f6112e8e79'
     SERVICE: typing.ClassVar[str] = 'controlboard'
     def __init__(self, device: DeviceDriver) -> None:
         """
