@@ -25,6 +25,11 @@ Bottle answer(ControlboardServer& server, const Bottle& request) {
   if (auto group = expand_group_request(request)) {
     return Bottle{Value::vocab(all_ok(server, *group) ? "ok" : "fail")};
   }
+  if (auto singles = expand_group_query(request)) {
+    std::vector<Bottle> replies;
+    for (const Bottle& single : *singles) replies.push_back(server.respond(single));
+    return combine_group_replies(request, replies);
+  }
   return server.respond(request);
 }
 

@@ -53,3 +53,27 @@ TEST(GroupRequests, OtherRequestsAreLeftAloneAndBadGroupsExpandToNothing) {
   ASSERT_TRUE(e);
   EXPECT_TRUE(e->empty());
 }
+
+TEST(GroupRequests, MotionDoneGroupAsksEachJointAndAndsTheAnswers) {
+  // A YARP controlboardwrapper2 over remote_controlboard asks checkMotionDone() of all its joints so.
+  const Bottle request = Bottle::from_text("[get] [dong] 2 (0 3)");
+  auto singles = expand_group_query(request);
+  ASSERT_TRUE(singles);
+  EXPECT_EQ(texts(*singles), (std::vector<std::string>{"[get] [don] 0", "[get] [don] 3"}));
+  const Bottle done = Bottle::from_text("[is] [don] 1 [tsta] 7 12.5 [ok]");
+  const Bottle moving = Bottle::from_text("[is] [don] 0 [tsta] 8 12.75 [ok]");
+  EXPECT_EQ(combine_group_replies(request, {done, done}).to_text(), "[is] [dong] 1 [tsta] 7 12.5 [ok]");
+  EXPECT_EQ(combine_group_replies(request, {done, moving}).to_text(), "[is] [dong] 0 [tsta] 8 12.75 [ok]");
+  EXPECT_EQ(combine_group_replies(request, {done, Bottle::from_text("[fail]")}).to_text(), "[fail]");
+}
+
+TEST(GroupRequests, MalformedMotionDoneGroupsAreRefused) {
+  EXPECT_FALSE(expand_group_query(Bottle::from_text("[get] [don] 0")));         // not a group form
+  EXPECT_FALSE(expand_group_query(Bottle::from_text("[set] [dong] 1 (0)")));    // not a query
+  for (const char* bad : {"[get] [dong] 3 (0 1)", "[get] [dong] 1", "[get] [dong] 1 (zero)", "[get] [dong] -1 ()"}) {
+    auto singles = expand_group_query(Bottle::from_text(bad));
+    ASSERT_TRUE(singles) << bad;
+    EXPECT_TRUE(singles->empty()) << bad;
+    EXPECT_EQ(combine_group_replies(Bottle::from_text(bad), *singles).to_text(), "[fail]") << bad;
+  }
+}

@@ -8,6 +8,8 @@
 //   [set] [posg] n (j...) (v...)  ->  [set] [pos] j v   (also relg, velg, accg, vmog, dpog)
 //   [set] [stog] n (j...)         ->  [set] [sto] j
 //   ([vmog] n (j...)) (v...)      ->  [set] [vmo] j v   on the command port (also posg, dpog)
+//   [get] [dong] n (j...)         ->  [get] [don] j, answered with one int, the AND of the joints'
+//                                     (a YARP proxy's checkMotionDone() of all its joints)
 #pragma once
 
 #include <optional>
@@ -23,5 +25,13 @@ std::optional<std::vector<Bottle>> expand_group_request(const Bottle& request);
 
 // The same for a command-port message ((head...) (values...)).
 std::optional<std::vector<Bottle>> expand_group_command(const Bottle& message);
+
+// The single-joint queries of a group query whose answer is one bool for all its joints, or nullopt
+// when `request` is not one ([get] [dong] n (j...)); counts that disagree give an empty list.
+std::optional<std::vector<Bottle>> expand_group_query(const Bottle& request);
+
+// The group query's reply from its joints' replies ([is] [don] <0|1> [tsta] n t [ok] each):
+// [is] <group vocab> <AND of the values> and the last reply's stamp, or [fail] when any failed.
+Bottle combine_group_replies(const Bottle& request, const std::vector<Bottle>& replies);
 
 }  // namespace robogene::dev
