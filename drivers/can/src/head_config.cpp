@@ -274,12 +274,17 @@ HeadConfig read_head_config(const Searchable& config) {
   }
   for (auto& b : head.boards) read_coupling(config, head, b);
   for (const auto& b : head.boards) {
+    // A coupled board derives both joints from both motors' encoders: both have them, or neither.
+    if (b.coupling && b.joints[0] >= 0 && b.joints[1] >= 0) {
+      const JointConfig& j0 = head.joints[static_cast<std::size_t>(b.joints[0])];
+      const JointConfig& j1 = head.joints[static_cast<std::size_t>(b.joints[1])];
+      if (j0.joint_encoder_bits != j1.joint_encoder_bits) {
+        general.fail("joint_encoder_bits", "joints " + j0.name + " and " + j1.name + " on coupled board " + std::to_string(b.address) +
+                                               " differ: its firmware derives both from both pans' encoders");
+      }
+    }
     for (int j : b.joints) {
       // A board's brake output follows one motor; on a coupled board each motor serves both axes.
-      if (j >= 0 && b.coupling && head.joints[static_cast<std::size_t>(j)].joint_encoder_bits != 0) {
-        general.fail("joint_encoder_bits", "joint " + head.joints[static_cast<std::size_t>(j)].name + " has a joint encoder, but board " +
-                                               std::to_string(b.address) + " couples its motors: the firmware reads joint encoders only on uncoupled axes");
-      }
       if (j >= 0 && b.coupling && head.joints[static_cast<std::size_t>(j)].has_brake) {
         general.fail("brake", "joint " + head.joints[static_cast<std::size_t>(j)].name + " has a brake, but board " +
                                   std::to_string(b.address) + " couples its motors: a board drives brakes only on uncoupled axes");

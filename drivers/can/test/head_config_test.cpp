@@ -117,7 +117,7 @@ TEST(HeadConfig, JointEncodersAreReadPerJointAndBadOnesNamed) {
                 .find("[GENERAL] key 'joint_encoder_bits': joint neck_roll: 12 bits; the boards read AS5048A joint encoders (14 bits) or none (0)"),
             std::string::npos);
   EXPECT_NE(error_for("joint_encoder_bits ", "joint_encoder_bits 14 14 14 14 14 0")
-                .find("joint eyes_version has a joint encoder, but board 3 couples its motors"),
+                .find("joints eyes_version and eyes_vergence on coupled board 3 differ: its firmware derives both from both pans' encoders"),
             std::string::npos);
   EXPECT_NE(error_for("joint_encoder_bits ", "joint_encoder_bits 14 14 14 14 0").find("expected 6 values"), std::string::npos);
 }

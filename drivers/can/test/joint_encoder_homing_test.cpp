@@ -6,6 +6,8 @@
 // failing encoder, or a board with no zero stored, leaving the joint refusing to move with the reason;
 // the lab's zero stored over the bus (driver and `robogene can-zero`) and kept across a power cycle.
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -149,6 +151,42 @@ TEST_F(JointEncoderHoming, BadZerosAndJointsWithoutAnEncoderAreRefusedByName) {
   }
   EXPECT_FALSE(driver_.positionMove(0, 1.0));
   EXPECT_NE(driver_.last_error().find("outside the joint's range"), std::string::npos) << driver_.last_error();
+}
+
+// A head whose eye pans have AS5048As too (an edited head.ini: the real one gives the eyes none): the eye
+// board derives version and vergence from the two pans' sensors at power-up.
+TEST(JointEncoderEyes, TheEyeBoardComesUpAtItsTrueVersionAndVergence) {
+  testing::TempBusDir dir;
+  std::ifstream in(testing::head_ini_path());
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string ini = text.str();
+  const std::string bits = "joint_encoder_bits 14 14 14 14 0 0";
+  ASSERT_NE(ini.find(bits), std::string::npos);
+  ini.replace(ini.find(bits), bits.size(), "joint_encoder_bits 14 14 14 14 14 14");
+  dev::Property config = dev::Property::from_ini(ini, "head.ini");
+  const HeadConfig head = read_head_config(config);
+  sim::SimulatedHead sim(head, std::make_unique<VirtualBus>("head"));
+  sim.power_up_at(3, 10.0, 4.0);  // left pan 10 deg, right pan 4 deg
+  config.put("bus", Value(std::string("virtual:head")));
+  RobogeneCan driver;
+  ASSERT_TRUE(driver.open(config)) << driver.last_error();
+  double version = 0, vergence = 0;
+  ASSERT_TRUE(testing::eventually(1.0, [&] { return driver.getEncoder(4, version) && driver.getEncoder(5, vergence); }));
+  EXPECT_NEAR(version, 7.0, kOneStep);
+  EXPECT_NEAR(vergence, 6.0, 2 * kOneStep);
+  const JointEncoderReading left = driver.joint_encoder(4), right = driver.joint_encoder(5);
+  EXPECT_EQ(left.measures, "left_eye_pan");
+  EXPECT_EQ(right.measures, "right_eye_pan");
+  ASSERT_TRUE(left.joint_degrees && right.joint_degrees);
+  EXPECT_NEAR(*left.joint_degrees, 10.0, kOneStep);
+  EXPECT_NEAR(*right.joint_degrees, 4.0, kOneStep);
+  ASSERT_TRUE(driver.positionMove(5, 0.0)) << driver.last_error();
+  ASSERT_TRUE(driver.positionMove(4, 0.0)) << driver.last_error();
+  ASSERT_TRUE(testing::eventually(4.0, [&] {
+    return std::fabs(sim.motor_degrees(3, 0)) < 0.1 && std::fabs(sim.motor_degrees(3, 1)) < 0.1;
+  })) << "pans at " << sim.motor_degrees(3, 0) << ", " << sim.motor_degrees(3, 1);
+  driver.close();
 }
 
 int run_cli(const std::string& args, std::string& out) {

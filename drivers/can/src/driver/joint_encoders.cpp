@@ -33,32 +33,37 @@ void require_encoder(const JointConfig& jc) {
 
 }  // namespace
 
-double joint_encoder_degrees(const JointConfig& jc, std::uint16_t raw, std::uint16_t zero) {
-  const double modulus = std::ldexp(1.0, jc.joint_encoder_bits);
+double joint_encoder_degrees(int bits, double middle, std::uint16_t raw, std::uint16_t zero) {
+  const double modulus = std::ldexp(1.0, bits);
   const double steps = std::fmod(raw - static_cast<double>(zero) + modulus, modulus);
-  const double middle = 0.5 * (jc.min + jc.max);
   double delta = std::fmod(steps * 360.0 / modulus - middle, 360.0);
   if (delta < -180.0) delta += 360.0;
   if (delta >= 180.0) delta -= 360.0;
   return middle + delta;
 }
 
-JointEncoderReading read_joint_encoder(BoardLink& link, const JointConfig& jc) {
+JointEncoderReading read_joint_encoder(BoardLink& link, const HeadConfig& head, const JointConfig& jc) {
   require_encoder(jc);
   const auto r = std::get<GetJointEncoderReply>(link.request(jc.board, jc.axis, GetJointEncoder{}).message);
+  const BoardConfig* board = head.board(jc.board);
+  const bool pan = board && board->coupling;
   JointEncoderReading out;
   out.joint = jc.name;
+  out.measures = pan ? board->coupling->motors[static_cast<std::size_t>(jc.axis)] : jc.name;
   out.state = to_string(r.state);
   out.raw = r.raw_angle;
   out.zero = r.zero;
   out.zero_stored = r.zero_stored;
   out.homed = r.homed;
   out.raw_degrees = r.raw_angle * 360.0 / std::ldexp(1.0, jc.joint_encoder_bits);
-  if (r.zero_stored) out.joint_degrees = joint_encoder_degrees(jc, r.raw_angle, r.zero);
+  if (r.zero_stored) {
+    out.joint_degrees = joint_encoder_degrees(jc.joint_encoder_bits, pan ? 0.0 : 0.5 * (jc.min + jc.max), r.raw_angle, r.zero);
+  }
   return out;
 }
 
-JointEncoderReading store_joint_encoder_zero(BoardLink& link, const JointConfig& jc, std::uint16_t zero) {
+JointEncoderReading store_joint_encoder_zero(BoardLink& link, const HeadConfig& head, const JointConfig& jc,
+                                             std::uint16_t zero) {
   require_encoder(jc);
   const long limit = 1L << jc.joint_encoder_bits;
   if (zero >= limit) {
@@ -66,7 +71,7 @@ JointEncoderReading store_joint_encoder_zero(BoardLink& link, const JointConfig&
                 "-bit encoder (0.." + std::to_string(limit - 1) + ")");
   }
   link.send(jc.board, jc.axis, SetJointEncoderZero{zero});
-  const JointEncoderReading r = read_joint_encoder(link, jc);
+  const JointEncoderReading r = read_joint_encoder(link, head, jc);
   if (!r.zero_stored || r.zero != zero) {
     throw Error("joint '" + jc.name + "': board " + std::to_string(jc.board) +
                 " did not take the zero (a running joint keeps its zero: stop it, set control mode idle, and store again)");
@@ -92,7 +97,7 @@ std::vector<JointEncoderReading> read_joint_encoders(std::unique_ptr<Bus> bus, c
   }
   BoardLink link(std::move(bus), Millis(head.reply_timeout_ms));
   std::vector<JointEncoderReading> out;
-  for (const JointConfig* jc : chosen) out.push_back(read_joint_encoder(link, *jc));
+  for (const JointConfig* jc : chosen) out.push_back(read_joint_encoder(link, head, *jc));
   return out;
 }
 
@@ -109,13 +114,13 @@ std::vector<JointEncoderReading> store_joint_encoder_zeros(
     if (zeros[i].second) {
       zero = *zeros[i].second;
     } else {
-      const JointEncoderReading now = read_joint_encoder(link, jc);
+      const JointEncoderReading now = read_joint_encoder(link, head, jc);
       if (now.state != "ok") {
         throw Error("joint '" + jc.name + "': its encoder is " + now.state + ", so there is no angle to take as its zero");
       }
       zero = now.raw;
     }
-    out.push_back(store_joint_encoder_zero(link, jc, zero));
+    out.push_back(store_joint_encoder_zero(link, head, jc, zero));
   }
   return out;
 }

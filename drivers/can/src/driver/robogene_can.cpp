@@ -56,7 +56,7 @@ void RobogeneCan::require_homed(int j) {
     if (homed_[static_cast<std::size_t>(j)] && !unconfigured) return;
     homed_[static_cast<std::size_t>(j)] = false;
   }
-  const JointEncoderReading r = read_joint_encoder(*link_, jc);
+  const JointEncoderReading r = read_joint_encoder(*link_, head_, jc);
   if (!r.homed) {
     std::string why = "its joint encoder is " + r.state;
     if (!r.zero_stored) {
@@ -73,7 +73,7 @@ void RobogeneCan::require_homed(int j) {
   commanded_mode_[static_cast<std::size_t>(j)] = ControlMode::not_configured;
 }
 
-JointEncoderReading RobogeneCan::joint_encoder(int j) { return read_joint_encoder(*link_, joint(j)); }
+JointEncoderReading RobogeneCan::joint_encoder(int j) { return read_joint_encoder(*link_, head_, joint(j)); }
 
 JointEncoderReading RobogeneCan::store_joint_encoder_zero(int j, std::uint16_t zero) {
   const JointConfig& jc = joint(j);
@@ -82,7 +82,7 @@ JointEncoderReading RobogeneCan::store_joint_encoder_zero(int j, std::uint16_t z
     std::lock_guard<std::mutex> lock(mutex_);
     homed_[static_cast<std::size_t>(j)] = jc.joint_encoder_bits == 0;
   }
-  return can::store_joint_encoder_zero(*link_, jc, zero);
+  return can::store_joint_encoder_zero(*link_, head_, jc, zero);
 }
 
 void RobogeneCan::ensure_mode(int j, ControlMode mode) {

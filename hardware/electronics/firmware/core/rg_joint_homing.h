@@ -8,7 +8,9 @@
 //   joint angle = (raw - zero) x 360 / 2^bits, wrapped into the 360 deg centred on the joint's range,
 //   position   = joint angle x counts per degree (the motor encoder's counts through the reduction),
 //
-// and the axis goes idle, homed. rg_board_init reads RG_JOINT_ENCODER_STARTUP_FRAMES frames at once,
+// and the axis goes idle, homed. On the eye board (coupled) the two encoders are the pans' (encoder 0 beside
+// motor 0, the left pan): each pan's angle is taken about 0, and version = (left + right) / 2 and vergence =
+// left - right home together, or neither does. rg_board_init reads RG_JOINT_ENCODER_STARTUP_FRAMES frames at once,
 // so a working encoder homes its axis before the first control period. An encoder that is absent or
 // failing, no stored zero, or an angle more than RG_JOINT_HOMING_RANGE_TOLERANCE_DEG outside the
 // joint's limits (a wrong zero, a slipped magnet) leave the axis unhomed: never a guessed zero. The

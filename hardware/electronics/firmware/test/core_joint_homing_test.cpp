@@ -207,3 +207,79 @@ TEST(CoreJointHoming, AnEncoderLostAfterHomingIsReportedButDoesNotStopTheAxis) {
 
 }  // namespace
 }  // namespace rg_test
+
+namespace rg_test {
+namespace {
+
+constexpr double kPanCounts = 100.0;  // each eye motor's counts per degree of its pan
+
+// The eye board with an AS5048A per pan (codegen gives version and vergence encoder bits only when both pans
+// have one): encoder 0 is the left pan's, beside motor 0; version = (L + R) / 2, vergence = L - R.
+struct EyeBoard : FakeBoard {
+  double left0 = 10.0, right0 = 4.0;  // the pans' angles at power-up
+  std::uint16_t magnet[2] = {3000, 12000};
+  bool missing_right = false;
+
+  EyeBoard() : FakeBoard(RG_COUPLING_VERSION_VERGENCE) {
+    auto& v = params.axes[0];
+    auto& g = params.axes[1];
+    v.counts_per_degree = static_cast<float>(2.0 * kPanCounts);  // version travels as L + R motor counts
+    g.counts_per_degree = static_cast<float>(kPanCounts);        // vergence as L - R
+    v.min_position = -6000;
+    v.max_position = 6000;
+    g.min_position = 0;
+    g.max_position = 4500;
+    for (unsigned i = 0; i < 2; ++i) {
+      params.axes[i].joint_encoder_bits = 14;
+      params.axes[i].joint_zero = magnet[i];
+      params.axes[i].joint_zero_stored = true;
+    }
+    joint_frames = [this](unsigned encoder) -> std::uint16_t {
+      if (encoder == 1 && missing_right) return 0;
+      const long steps = std::lround(pan(encoder) * 16384.0 / 360.0) + magnet[encoder];
+      return rg_as5048a_frame(static_cast<std::uint16_t>(((steps % 16384) + 16384) % 16384), false);
+    };
+  }
+  double pan(unsigned i) const { return (i == 0 ? left0 : right0) + plant[i].counts / kPanCounts; }
+};
+
+TEST(CoreJointHoming, TheEyeBoardDerivesVersionAndVergenceFromBothPans) {
+  EyeBoard b;
+  b.start();
+  EXPECT_EQ(b.mode(0), ROBOGENE_CAN_CONTROL_MODE_IDLE);
+  EXPECT_EQ(b.mode(1), ROBOGENE_CAN_CONTROL_MODE_IDLE);
+  const double step = 360.0 / 16384.0;
+  EXPECT_NEAR(b.core.axes[0].measured / (2.0 * kPanCounts), 7.0, step) << "version = (10 + 4) / 2";
+  EXPECT_NEAR(b.core.axes[1].measured / kPanCounts, 6.0, 2 * step) << "vergence = 10 - 4";
+  // Both run, and 0 version with 0 vergence is both eyes straight ahead.
+  b.command({ROBOGENE_CAN_CMD_SET_CONTROL_MODE, ROBOGENE_CAN_CONTROL_MODE_POSITION}, 0);
+  b.command({ROBOGENE_CAN_CMD_SET_CONTROL_MODE, ROBOGENE_CAN_CONTROL_MODE_POSITION}, 1);
+  b.command(position_move(0, 2000), 0);
+  b.command(position_move(0, 2000), 1);
+  b.run(3.0);
+  EXPECT_NEAR(b.pan(0), 0.0, 0.15);
+  EXPECT_NEAR(b.pan(1), 0.0, 0.15);
+}
+
+TEST(CoreJointHoming, OnePansMissingEncoderLeavesBothEyeJointsUnhomed) {
+  EyeBoard b;
+  b.missing_right = true;
+  b.start();
+  for (unsigned axis = 0; axis < 2; ++axis) {
+    EXPECT_EQ(b.mode(axis), ROBOGENE_CAN_CONTROL_MODE_NOT_CONFIGURED) << axis;
+    b.command({ROBOGENE_CAN_CMD_SET_CONTROL_MODE, ROBOGENE_CAN_CONTROL_MODE_POSITION}, axis);
+    EXPECT_EQ(b.mode(axis), ROBOGENE_CAN_CONTROL_MODE_NOT_CONFIGURED) << axis;
+  }
+  b.run(0.01);
+  EXPECT_NE(b.core.axes[0].faults & ROBOGENE_CAN_AXIS_FAULTS_ABSOLUTE_ENCODER_ERROR, 0) << "version needs the right pan too";
+  EXPECT_NE(b.core.axes[1].faults & ROBOGENE_CAN_AXIS_FAULTS_ABSOLUTE_ENCODER_ERROR, 0);
+  // The encoder plugged back in: both home together.
+  b.missing_right = false;
+  b.run(0.02);
+  EXPECT_EQ(b.mode(0), ROBOGENE_CAN_CONTROL_MODE_IDLE);
+  EXPECT_EQ(b.mode(1), ROBOGENE_CAN_CONTROL_MODE_IDLE);
+  EXPECT_NEAR(b.core.axes[1].measured / kPanCounts, 6.0, 0.05);
+}
+
+}  // namespace
+}  // namespace rg_test

@@ -23,27 +23,32 @@ class BoardLink;
 
 struct JointEncoderReading {
   std::string joint;
+  // What the encoder is on: the joint itself, or on the eye board (coupled) a pan: eyes_version's axis
+  // reads the left pan's (the encoder beside motor 0), eyes_vergence's the right pan's.
+  std::string measures;
   std::string state;          // JointEncoderState: starting, ok, absent, failed
   std::uint16_t raw = 0;      // the last good raw angle
   std::uint16_t zero = 0;     // the stored zero (meaningful when zero_stored)
   bool zero_stored = false;
   bool homed = false;         // the board took the joint's position from it
   double raw_degrees = 0.0;   // raw x 360 / 2^bits
-  // (raw - zero) in degrees, wrapped into the turn centred on the joint's range (as the board does);
-  // only with a stored zero.
+  // (raw - zero) in degrees, wrapped into the turn centred on the joint's range (a pan's: about 0), as
+  // the board does; only with a stored zero.
   std::optional<double> joint_degrees;
 };
 
 // The joint's angle from a raw reading and a zero, as the firmware computes it.
-double joint_encoder_degrees(const JointConfig& jc, std::uint16_t raw, std::uint16_t zero);
+// `middle`: the middle of the range the angle is wrapped about (a joint's; 0 for a pan).
+double joint_encoder_degrees(int bits, double middle, std::uint16_t raw, std::uint16_t zero);
 
 // Reads one joint's encoder through its board (get_joint_encoder). Throws robogene::Error for a joint
 // without a joint encoder, or BusError when its board does not answer.
-JointEncoderReading read_joint_encoder(BoardLink& link, const JointConfig& jc);
+JointEncoderReading read_joint_encoder(BoardLink& link, const HeadConfig& head, const JointConfig& jc);
 // Stores `zero` on the joint's board (set_joint_encoder_zero) and reads back: the board must report it
 // stored and the joint homed. Throws robogene::Error naming the joint for a zero beyond the encoder's
 // bits, a joint without an encoder, or a board that did not take it (the joint was running).
-JointEncoderReading store_joint_encoder_zero(BoardLink& link, const JointConfig& jc, std::uint16_t zero);
+JointEncoderReading store_joint_encoder_zero(BoardLink& link, const HeadConfig& head, const JointConfig& jc,
+                                             std::uint16_t zero);
 
 // The same on a bus of its own, for `robogene can-zero`: `joints` by name (empty: every joint with a
 // joint encoder). Throws robogene::Error naming an unknown joint or one without an encoder.
