@@ -220,5 +220,23 @@ TEST(JointEncoderCli, CanZeroReadsTheEncodersAndRefusesBadRequestsByName) {
   EXPECT_NE(out.find("can-zero: neck_yaw: encoder ok"), std::string::npos) << out;
 }
 
+// can-sim's --pose, which the head session (here and in the VM) powers the neck up with, refuses what it cannot use.
+TEST(JointEncoderCli, CanSimRefusesABadPoseByName) {
+  testing::TempBusDir dir;
+  for (const auto& [pose, message] : {std::pair<std::string, std::string>{"neck_twist=3", "'neck_twist=3' is not JOINT=DEG"},
+                                      {"neck_pitch=12,neck_roll", "'neck_roll' is not JOINT=DEG"},
+                                      {"neck_pitch=twelve", "'twelve' (neck_pitch) is not an angle in degrees"}}) {
+    const std::string cmd = testing::robogene_bin() + " can-sim --bus virtual:pose --duration 1 --from " + testing::head_ini_path() +
+                            " --pose " + pose + " 2>&1";
+    std::string out;
+    FILE* p = ::popen(cmd.c_str(), "r");
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    const int status = p ? ::pclose(p) : -1;
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << pose << ": " << out;
+    EXPECT_NE(out.find(message), std::string::npos) << out;
+  }
+}
+
 }  // namespace
 }  // namespace robogene::can
