@@ -28,7 +28,7 @@ enum { RG_COUPLING_NONE = 0, RG_COUPLING_VERSION_VERGENCE = 1 };  // robogene_co
 
 // Firmware identity in the get_firmware_version reply.
 #define RG_FIRMWARE_VERSION 2u
-#define RG_FIRMWARE_REVISION 0u
+#define RG_FIRMWARE_REVISION 1u  // 2.1: the joint encoders read, protocol 1.1
 #define RG_FIRMWARE_BUILD 0u
 
 // Supply window outside which the bridges stay off (mV): the drivers' 12 V rail.
