@@ -261,6 +261,17 @@ TEST(CoreJointHoming, TheEyeBoardDerivesVersionAndVergenceFromBothPans) {
   EXPECT_NEAR(b.pan(1), 0.0, 0.15);
 }
 
+TEST(CoreJointHoming, AnAxisWithAJointEncoderIsNeverRunIntoAStop) {
+  EyeBoard b;
+  b.missing_right = true;  // unhomed
+  b.params.axes[0].homing = rg_homing_config_t{+1, 5000.0f, 250, 15000, 1000, 5000, 0};
+  b.start();
+  b.command({ROBOGENE_CAN_CMD_CALIBRATE_ENCODER, ROBOGENE_CAN_CALIBRATION_TYPE_HARD_STOP, 0, 0, 0, 0}, 0);
+  EXPECT_EQ(b.mode(0), ROBOGENE_CAN_CONTROL_MODE_NOT_CONFIGURED);
+  b.run(0.2);
+  EXPECT_FALSE(b.plant[0].enabled);
+}
+
 TEST(CoreJointHoming, OnePansMissingEncoderLeavesBothEyeJointsUnhomed) {
   EyeBoard b;
   b.missing_right = true;
