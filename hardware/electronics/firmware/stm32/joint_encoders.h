@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// The two AS5048A joint encoders on SPI1 (J12/J22 of the board, level-shifted): SCK on PB3, the shared
+// The two AS5048A joint encoders on SPI1 (J22 and J32 of the board, level-shifted): SCK on PB3, the shared
 // data line on PB4 (pulled low by R8: a missing encoder reads 0x0000), each encoder's chip select a
 // GPIO (axis 0: PA15, axis 1: PA5; 10 k pull-ups). MOSI is not wired to a pin since revision D: R11
 // holds the encoders' input high, so every frame they receive is 0xFFFF, read angle.
