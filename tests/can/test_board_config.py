@@ -298,6 +298,37 @@ def test_an_absolute_encoder_joint_needs_its_encoder(tree):
            "joint encoder (drives.left_eye_pan.joint_encoder)" in errs, errs
 
 
+LEFT_DRIVE = "left_eye_pan:  {motor: faulhaber-1717T012SR, gearhead: faulhaber-16-7-43, encoder: faulhaber-IE2-512-17}"
+RIGHT_DRIVE = "right_eye_pan: {motor: faulhaber-1717T012SR, gearhead: faulhaber-16-7-43, encoder: faulhaber-IE2-512-17}"
+
+
+def _with_pan_encoder(text: str, drive: str) -> str:
+    assert text.count(drive) == 1, drive
+    return text.replace(drive, drive[:-1] + ", joint_encoder: ams-AS5048A}")
+
+
+def test_coupled_eye_joints_get_joint_encoder_bits_when_both_pans_have_one(tree):
+    """Not set in the real parameter file (the eyes have no sensor yet): an edited copy with an AS5048A per pan
+    gives version and vergence the encoders' bits, which the eye board reads to derive them at start-up."""
+    path = tree / "hardware" / "head-parameters.yaml"
+    path.write_text(_with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE))
+    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
+    assert axes["eyes_version"].joint_encoder_bits == 14 and axes["eyes_vergence"].joint_encoder_bits == 14
+    assert axes["neck_pitch"].joint_encoder_bits == 14
+
+
+def test_the_real_eyes_have_no_joint_encoder_bits(tree):
+    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
+    assert axes["eyes_version"].joint_encoder_bits == 0 and axes["eyes_vergence"].joint_encoder_bits == 0
+
+
+def test_one_pan_with_a_joint_encoder_is_refused(tree):
+    errs, text = _errors(tree, LEFT_DRIVE, _with_pan_encoder(LEFT_DRIVE, LEFT_DRIVE))
+    assert any(e.endswith("error: motor_control.joints.eyes_version: left_eye_pan has a joint encoder but right_eye_pan "
+                          "has none: the eye board derives version and vergence from both pans' sensors "
+                          "(drives.<pan>.joint_encoder)") for e in errs), errs
+
+
 # ---- a wrong parameter file is refused, naming the field --------------------------------------
 
 @pytest.fixture

@@ -68,7 +68,7 @@ def test_the_block_says_what_the_protocol_file_says():
     named_types = {t["name"] for t in idl["enums"] + idl["flags"]} | {"BroadcastMask"}
     expected_commands = [c for k in idl["classes"] for c in k.get("commands", [])]
     expected_broadcasts = [b for k in idl["classes"] for b in k.get("broadcasts", [])]
-    assert len(commands) == len(expected_commands) == 35  # 29 motor-control commands, 6 of the bootloader
+    assert len(commands) == len(expected_commands) == 37  # 31 motor-control commands, 6 of the bootloader
     assert len(broadcasts) == len(expected_broadcasts) == 6
     for c in expected_commands:
         row = commands[f"`{c['name']}`"]

@@ -356,7 +356,7 @@ class _Reader:
             self.fits(path + ("current_limit",), current, "set_current_limit", "current")
             lo, hi = self.mech["limits"][name]
             first = chain.get(motors[0], {})
-            bits = first.get("joint_encoder", {}).get("bits", 0) if len(motors) == 1 else 0
+            bits = first.get("joint_encoder", {}).get("bits", 0) if len(motors) == 1 else self._coupled_bits(path, motors, chain)
             braked = [m for m in motors if chain[m].get("brake")]
             if braked and len(motors) > 1:
                 # the board's brake output follows one axis; a coupled motor serves both
@@ -370,6 +370,24 @@ class _Reader:
                 self.fits(path, bound * counts, "set_min_position", "position", f"the limit {bound:g} deg")
             axes[name] = axis
         return axes
+
+    def _coupled_bits(self, path: tuple, motors: list, chain: dict) -> int:
+        """A coupled joint's joint-encoder bits: the eye board derives version and vergence from both pans'
+        sensors at start-up, so both pans need one (drives.<pan>.joint_encoder), of the same bits; none: 0."""
+        have = [m for m in motors if chain[m].get("joint_encoder")]
+        if not have:
+            return 0
+        if len(have) != len(motors):
+            missing = [m for m in motors if m not in have]
+            self.fail(path, f"{', '.join(have)} has a joint encoder but {', '.join(missing)} has none: the eye board "
+                      "derives version and vergence from both pans' sensors (drives.<pan>.joint_encoder)")
+            raise _Fail
+        bits = {chain[m]["joint_encoder"].get("bits", 0) for m in have}
+        if len(bits) != 1:
+            self.fail(path, f"the pans' joint encoders differ in bits ({', '.join(str(b) for b in sorted(bits))}): "
+                      "the eye board reads both alike")
+            raise _Fail
+        return bits.pop()
 
     def _stops(self) -> dict[str, tuple[int, float, float]]:
         """homing.<physical joint> (top level): (direction, the stop's angle on that side, back-off) of each joint

@@ -178,6 +178,41 @@ std::int64_t wire_of(CalibrationType v, const char* message, const char* field) 
   return static_cast<std::int64_t>(v);
 }
 
+const char* name_of(JointEncoderState v) {
+  switch (v) {
+    case JointEncoderState::starting: return "starting";
+    case JointEncoderState::ok: return "ok";
+    case JointEncoderState::absent: return "absent";
+    case JointEncoderState::failed: return "failed";
+    case JointEncoderState::none: return "none";
+  }
+  return nullptr;
+}
+
+JointEncoderState joint_encoder_state_from_wire(std::int64_t raw, const char* message, const char* field) {
+  const auto v = static_cast<JointEncoderState>(raw);
+  if (raw < 0 || raw > 255 || name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(raw) + " is not a JointEncoderState");
+  }
+  return v;
+}
+
+JointEncoderState joint_encoder_state_from_text(const std::string& word, const char* message, const char* field) {
+  if (word == "starting") return JointEncoderState::starting;
+  if (word == "ok") return JointEncoderState::ok;
+  if (word == "absent") return JointEncoderState::absent;
+  if (word == "failed") return JointEncoderState::failed;
+  if (word == "none") return JointEncoderState::none;
+  fail(std::string(message) + "." + field + ": '" + word + "' is not a JointEncoderState (starting, ok, absent, failed, none)");
+}
+
+std::int64_t wire_of(JointEncoderState v, const char* message, const char* field) {
+  if (name_of(v) == nullptr) {
+    fail(std::string(message) + "." + field + ": " + std::to_string(static_cast<std::int64_t>(v)) + " is not a JointEncoderState");
+  }
+  return static_cast<std::int64_t>(v);
+}
+
 const char* name_of(BoardType v) {
   switch (v) {
     case BoardType::dsp: return "dsp";
@@ -1002,6 +1037,77 @@ void parse_fields(TextFields& t, SetBroadcastPolicy& m) {
   m.mask = static_cast<std::uint32_t>(t.integer("mask", 0, 4294967295LL));
 }
 
+// ---- set_joint_encoder_zero
+void put_fields(Frame& f, const SetJointEncoderZero& m) {
+  put(f, 1, 2, static_cast<std::int64_t>(m.zero));
+}
+
+void take_fields(const Frame& f, SetJointEncoderZero& m) {
+  m.zero = static_cast<std::uint16_t>(get(f, 1, 2, false));
+}
+
+void text_fields(std::string& s, const SetJointEncoderZero& m) {
+  s += " zero=" + std::to_string(m.zero);
+}
+
+void parse_fields(TextFields& t, SetJointEncoderZero& m) {
+  m.zero = static_cast<std::uint16_t>(t.integer("zero", 0, 65535));
+}
+
+// ---- get_joint_encoder
+void put_fields(Frame& f, const GetJointEncoder& m) {
+  (void)f;
+  (void)m;
+}
+
+void take_fields(const Frame& f, GetJointEncoder& m) {
+  (void)f;
+  (void)m;
+}
+
+void text_fields(std::string& s, const GetJointEncoder& m) {
+  (void)s;
+  (void)m;
+}
+
+void parse_fields(TextFields& t, GetJointEncoder& m) {
+  (void)t;
+  (void)m;
+}
+
+// ---- get_joint_encoder_reply
+void put_fields(Frame& f, const GetJointEncoderReply& m) {
+  put(f, 1, 2, static_cast<std::int64_t>(m.raw_angle));
+  put(f, 3, 1, wire_of(m.state, "get_joint_encoder_reply", "state"));
+  put(f, 4, 2, static_cast<std::int64_t>(m.zero));
+  put(f, 6, 1, m.zero_stored ? 1 : 0);
+  put(f, 7, 1, m.homed ? 1 : 0);
+}
+
+void take_fields(const Frame& f, GetJointEncoderReply& m) {
+  m.raw_angle = static_cast<std::uint16_t>(get(f, 1, 2, false));
+  m.state = joint_encoder_state_from_wire(get(f, 3, 1, false), "get_joint_encoder_reply", "state");
+  m.zero = static_cast<std::uint16_t>(get(f, 4, 2, false));
+  m.zero_stored = bool_from_wire(get(f, 6, 1, false), "get_joint_encoder_reply", "zero_stored");
+  m.homed = bool_from_wire(get(f, 7, 1, false), "get_joint_encoder_reply", "homed");
+}
+
+void text_fields(std::string& s, const GetJointEncoderReply& m) {
+  s += " raw_angle=" + std::to_string(m.raw_angle);
+  s += " state=" + std::string(to_string(m.state));
+  s += " zero=" + std::to_string(m.zero);
+  s += " zero_stored=" + std::string(m.zero_stored ? "true" : "false");
+  s += " homed=" + std::string(m.homed ? "true" : "false");
+}
+
+void parse_fields(TextFields& t, GetJointEncoderReply& m) {
+  m.raw_angle = static_cast<std::uint16_t>(t.integer("raw_angle", 0, 65535));
+  m.state = joint_encoder_state_from_text(t.word("state"), "get_joint_encoder_reply", "state");
+  m.zero = static_cast<std::uint16_t>(t.integer("zero", 0, 65535));
+  m.zero_stored = t.boolean("zero_stored");
+  m.homed = t.boolean("homed");
+}
+
 // ---- set_position_pid
 void put_fields(Frame& f, const SetPositionPid& m) {
   put(f, 1, 2, static_cast<std::int64_t>(m.kp));
@@ -1710,6 +1816,11 @@ const char* to_string(CalibrationType v) {
   return name ? name : "(undefined)";
 }
 
+const char* to_string(JointEncoderState v) {
+  const char* name = name_of(v);
+  return name ? name : "(undefined)";
+}
+
 const char* to_string(BoardType v) {
   const char* name = name_of(v);
   return name ? name : "(undefined)";
@@ -1876,6 +1987,18 @@ bool SetCurrentLimit::operator==(const SetCurrentLimit& o) const {
 
 bool SetBroadcastPolicy::operator==(const SetBroadcastPolicy& o) const {
   return mask == o.mask;
+}
+
+bool SetJointEncoderZero::operator==(const SetJointEncoderZero& o) const {
+  return zero == o.zero;
+}
+
+bool GetJointEncoder::operator==(const GetJointEncoder& ) const {
+  return true;
+}
+
+bool GetJointEncoderReply::operator==(const GetJointEncoderReply& o) const {
+  return raw_angle == o.raw_angle && state == o.state && zero == o.zero && zero_stored == o.zero_stored && homed == o.homed;
 }
 
 bool SetPositionPid::operator==(const SetPositionPid& o) const {
@@ -2094,6 +2217,13 @@ Envelope decode(const Frame& f) {
           if (!from_host) fail(frame_text(f) + ": board " + std::to_string(id.source) + " sent set_broadcast_policy, which has no reply");
           e.message = take<SetBroadcastPolicy>(f);
           return e;
+        case 75:
+          if (!from_host) fail(frame_text(f) + ": board " + std::to_string(id.source) + " sent set_joint_encoder_zero, which has no reply");
+          e.message = take<SetJointEncoderZero>(f);
+          return e;
+        case 76:
+          e.message = from_host ? take<GetJointEncoder>(f) : take<GetJointEncoderReply>(f);
+          return e;
         case 82:
           if (!from_host) fail(frame_text(f) + ": board " + std::to_string(id.source) + " sent set_position_pid, which has no reply");
           e.message = take<SetPositionPid>(f);
@@ -2236,6 +2366,9 @@ Envelope from_text(std::string_view text) {
   if (tokens[0] == GetMaxVelocityReply::name) return parse_one<GetMaxVelocityReply>(t);
   if (tokens[0] == SetCurrentLimit::name) return parse_one<SetCurrentLimit>(t);
   if (tokens[0] == SetBroadcastPolicy::name) return parse_one<SetBroadcastPolicy>(t);
+  if (tokens[0] == SetJointEncoderZero::name) return parse_one<SetJointEncoderZero>(t);
+  if (tokens[0] == GetJointEncoder::name) return parse_one<GetJointEncoder>(t);
+  if (tokens[0] == GetJointEncoderReply::name) return parse_one<GetJointEncoderReply>(t);
   if (tokens[0] == SetPositionPid::name) return parse_one<SetPositionPid>(t);
   if (tokens[0] == GetPositionPid::name) return parse_one<GetPositionPid>(t);
   if (tokens[0] == GetPositionPidReply::name) return parse_one<GetPositionPidReply>(t);

@@ -23,9 +23,9 @@ namespace robogene::can {
 
 inline constexpr char kProtocolName[] = "motor_control";
 // First 16 hex digits of the SHA-256 of the protocol's canonical form.
-inline constexpr char kProtocolFingerprint[] = "250b8f75f4216175";
+inline constexpr char kProtocolFingerprint[] = "03c95cd8fdb0f821";
 inline constexpr std::uint8_t kProtocolMajor = 1;
-inline constexpr std::uint8_t kProtocolMinor = 0;
+inline constexpr std::uint8_t kProtocolMinor = 1;
 inline constexpr std::uint32_t kBitrate = 1000000;  // bit/s
 inline constexpr std::uint8_t kHostAddress = 0;
 inline constexpr std::uint8_t kFirstBoardAddress = 1;
@@ -96,6 +96,16 @@ enum class CalibrationType : std::uint8_t {
   hard_stop = 0,  // Drive against the axis's hard stop at a limited PWM.
 };
 const char* to_string(CalibrationType v);
+
+// Robogene: whether an axis's absolute joint encoder (AS5048A) can be trusted, from the frames the board reads (docs/firmware.md "Joint encoders").
+enum class JointEncoderState : std::uint8_t {
+  starting = 0,  // Too few good frames yet.
+  ok = 1,
+  absent = 2,  // Every frame reads 0x0000: the data line's pull-down, no sensor answering.
+  failed = 3,  // Frames in a row with bad parity or the sensor's error flag.
+  none = 255,  // The axis has no joint encoder.
+};
+const char* to_string(JointEncoderState v);
 
 // The board family a firmware-version reply names (iCubCanProto_types.h).
 enum class BoardType : std::uint8_t {
@@ -187,6 +197,8 @@ enum class Command : std::uint8_t {
   get_max_velocity = 69,
   set_current_limit = 72,
   set_broadcast_policy = 73,
+  set_joint_encoder_zero = 75,
+  get_joint_encoder = 76,
   set_position_pid = 82,
   get_position_pid = 83,
   set_position_pid_limits = 84,
@@ -601,6 +613,45 @@ struct SetBroadcastPolicy {
   bool operator!=(const SetBroadcastPolicy& o) const { return !(*this == o); }
 };
 
+// Robogene (iCub's set_offset_abs_encoder code): store the raw joint-encoder angle at which the joint is at 0 deg in the board's settings flash; an axis that is not running takes its position from its joint encoder again with it. Ignored for a running axis, an axis with no joint encoder or a zero beyond the encoder's bits.
+struct SetJointEncoderZero {
+  static constexpr char name[] = "set_joint_encoder_zero";
+  static constexpr MessageClass message_class = MessageClass::polling_motor_control;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 75;
+  static constexpr std::uint8_t length = 3;  // data bytes (DLC)
+  std::uint16_t zero = 0;  // uint16, count
+  bool operator==(const SetJointEncoderZero& o) const;
+  bool operator!=(const SetJointEncoderZero& o) const { return !(*this == o); }
+};
+
+// Robogene (iCub's get_offset_abs_encoder code): an axis's joint encoder as the board reads it: the last good raw angle, the encoder's state, the stored zero, and whether the axis took its position from it (homed).
+struct GetJointEncoder {
+  static constexpr char name[] = "get_joint_encoder";
+  static constexpr MessageClass message_class = MessageClass::polling_motor_control;
+  static constexpr MessageKind kind = MessageKind::request;
+  static constexpr std::uint8_t code = 76;
+  static constexpr std::uint8_t length = 1;  // data bytes (DLC)
+  bool operator==(const GetJointEncoder& o) const;
+  bool operator!=(const GetJointEncoder& o) const { return !(*this == o); }
+};
+
+// Robogene (iCub's get_offset_abs_encoder code): an axis's joint encoder as the board reads it: the last good raw angle, the encoder's state, the stored zero, and whether the axis took its position from it (homed). (reply)
+struct GetJointEncoderReply {
+  static constexpr char name[] = "get_joint_encoder_reply";
+  static constexpr MessageClass message_class = MessageClass::polling_motor_control;
+  static constexpr MessageKind kind = MessageKind::reply;
+  static constexpr std::uint8_t code = 76;
+  static constexpr std::uint8_t length = 8;  // data bytes (DLC)
+  std::uint16_t raw_angle = 0;  // uint16, count
+  JointEncoderState state = JointEncoderState::starting;  // uint8
+  std::uint16_t zero = 0;  // uint16, count
+  bool zero_stored = false;  // bool
+  bool homed = false;  // bool
+  bool operator==(const GetJointEncoderReply& o) const;
+  bool operator!=(const GetJointEncoderReply& o) const { return !(*this == o); }
+};
+
 // Set an axis's position gains; output = (kp e + ki sum(e) + kd de) >> shift.
 struct SetPositionPid {
   static constexpr char name[] = "set_position_pid";
@@ -987,6 +1038,9 @@ using Message = std::variant<
     GetMaxVelocityReply,
     SetCurrentLimit,
     SetBroadcastPolicy,
+    SetJointEncoderZero,
+    GetJointEncoder,
+    GetJointEncoderReply,
     SetPositionPid,
     GetPositionPid,
     GetPositionPidReply,

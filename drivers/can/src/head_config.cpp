@@ -183,6 +183,10 @@ HeadConfig read_head_config(const Searchable& config) {
   const auto lines = general.ints("motor_encoder_lines", count, 1, 1 << 20);
   // brake is optional: a configuration without it has no holding brakes.
   const auto brake = general.has("brake") ? general.ints("brake", count, 0, 1) : std::vector<int>(count, 0);
+  // joint_encoder_bits is optional: a configuration without it has no joint encoders. The boards read
+  // AS5048As (14 bits); 0 is none.
+  const auto joint_encoder_bits =
+      general.has("joint_encoder_bits") ? general.ints("joint_encoder_bits", count, 0, 14) : std::vector<int>(count, 0);
   head.pwm_full_scale = general.integer("pwm_full_scale", 1, 32767);
   head.control_period_us = general.integer("control_period_us", 100, 100000);
 
@@ -243,6 +247,11 @@ HeadConfig read_head_config(const Searchable& config) {
     jc.gear_ratio = gear[j];
     jc.motor_encoder_lines = lines[j];
     jc.has_brake = brake[j] != 0;
+    jc.joint_encoder_bits = joint_encoder_bits[j];
+    if (jc.joint_encoder_bits != 0 && jc.joint_encoder_bits != 14) {
+      general.fail("joint_encoder_bits", "joint " + jc.name + ": " + std::to_string(jc.joint_encoder_bits) +
+                                             " bits; the boards read AS5048A joint encoders (14 bits) or none (0)");
+    }
     jc.min = min[j];
     jc.max = max[j];
     if (jc.min >= jc.max) limits.fail("max", "joint " + jc.name + ": max " + Group::text(jc.max) + " is not above min " + Group::text(jc.min));
@@ -265,6 +274,15 @@ HeadConfig read_head_config(const Searchable& config) {
   }
   for (auto& b : head.boards) read_coupling(config, head, b);
   for (const auto& b : head.boards) {
+    // A coupled board derives both joints from both motors' encoders: both have them, or neither.
+    if (b.coupling && b.joints[0] >= 0 && b.joints[1] >= 0) {
+      const JointConfig& j0 = head.joints[static_cast<std::size_t>(b.joints[0])];
+      const JointConfig& j1 = head.joints[static_cast<std::size_t>(b.joints[1])];
+      if (j0.joint_encoder_bits != j1.joint_encoder_bits) {
+        general.fail("joint_encoder_bits", "joints " + j0.name + " and " + j1.name + " on coupled board " + std::to_string(b.address) +
+                                               " differ: its firmware derives both from both pans' encoders");
+      }
+    }
     for (int j : b.joints) {
       // A board's brake output follows one motor; on a coupled board each motor serves both axes.
       if (j >= 0 && b.coupling && head.joints[static_cast<std::size_t>(j)].has_brake) {

@@ -35,13 +35,19 @@ inline std::string robogene_bin() {
 }
 
 // Starts `robogene can-sim`; the caller stops it with SIGTERM.
-inline pid_t start_simulator(const std::string& bus, const std::string& log) {
+// `pose`: can-sim's --pose (the joints' angles at power-up), or "" for all at 0.
+inline pid_t start_simulator(const std::string& bus, const std::string& log, const std::string& pose = "") {
   const std::string bin = robogene_bin();
   const std::string ini = head_ini_path();
   const pid_t pid = ::fork();
   if (pid == 0) {
-    ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
-            "--duration", "120", static_cast<char*>(nullptr));
+    if (pose.empty()) {
+      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
+              "--duration", "120", static_cast<char*>(nullptr));
+    } else {
+      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
+              "--duration", "120", "--pose", pose.c_str(), static_cast<char*>(nullptr));
+    }
     ::_exit(127);
   }
   return pid;
@@ -60,7 +66,13 @@ struct ChildGuard {
 
 inline void run_head_session(const std::string& bus, const std::string& log_dir) {
   const std::string sim_log = log_dir + "/can-sim.log", driver_log = log_dir + "/robogene_can.log";
-  ChildGuard sim_guard{start_simulator(bus, sim_log)};
+  // The neck and the eye tilt power up away from 0: their boards home them from their joint encoders, so
+  // the driver reads this pose from the start (the eyes, homed against stops by can-home, count from 0).
+  const std::vector<std::pair<std::string, double>> pose = {{"neck_pitch", 12.0}, {"neck_roll", -7.5}, {"neck_yaw", 20.0},
+                                                            {"eyes_tilt", -10.0}};
+  std::string pose_arg;
+  for (const auto& [name, deg] : pose) pose_arg += (pose_arg.empty() ? "" : ",") + name + "=" + std::to_string(deg);
+  ChildGuard sim_guard{start_simulator(bus, sim_log, pose_arg)};
   const pid_t sim = sim_guard.pid;
   ASSERT_GT(sim, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // let it open the bus
@@ -77,6 +89,13 @@ inline void run_head_session(const std::string& bus, const std::string& log_dir)
     dev::IPositionControl* pos = nullptr;
     dev::IVelocityControl* vel = nullptr;
     ASSERT_TRUE(device.view(enc) && device.view(pos) && device.view(vel));
+    for (std::size_t j = 0; j < head.joints.size(); ++j) {
+      double expected = 0.0;
+      for (const auto& [name, deg] : pose) expected = name == head.joints[j].name ? deg : expected;
+      double v = 1e9;
+      ASSERT_TRUE(eventually(2.0, [&] { return enc->getEncoder(static_cast<int>(j), v); }));
+      EXPECT_NEAR(v, expected, 0.05) << head.joints[j].name << " at power-up";
+    }
     std::vector<double> targets;
     for (const auto& j : head.joints) targets.push_back(j.min + 0.7 * (j.max - j.min));
     ASSERT_TRUE(pos->setRefSpeeds(std::vector<double>(head.joints.size(), 40.0)));

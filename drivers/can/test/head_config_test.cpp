@@ -104,3 +104,23 @@ TEST(HeadConfig, BadFieldsAreNamedWithFileLineGroupAndKey) {
 
 }  // namespace
 }  // namespace robogene::can
+
+namespace robogene::can {
+namespace {
+
+TEST(HeadConfig, JointEncodersAreReadPerJointAndBadOnesNamed) {
+  const HeadConfig head = testing::head_config();
+  std::vector<int> bits;
+  for (const auto& j : head.joints) bits.push_back(j.joint_encoder_bits);
+  EXPECT_EQ(bits, (std::vector<int>{14, 14, 14, 14, 0, 0})) << "the neck and the eye tilt have AS5048As";
+  EXPECT_NE(error_for("joint_encoder_bits ", "joint_encoder_bits 14 12 14 14 0 0")
+                .find("[GENERAL] key 'joint_encoder_bits': joint neck_roll: 12 bits; the boards read AS5048A joint encoders (14 bits) or none (0)"),
+            std::string::npos);
+  EXPECT_NE(error_for("joint_encoder_bits ", "joint_encoder_bits 14 14 14 14 14 0")
+                .find("joints eyes_version and eyes_vergence on coupled board 3 differ: its firmware derives both from both pans' encoders"),
+            std::string::npos);
+  EXPECT_NE(error_for("joint_encoder_bits ", "joint_encoder_bits 14 14 14 14 0").find("expected 6 values"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace robogene::can

@@ -6,9 +6,12 @@
 // in another terminal talks to it as to the real boards.
 #include <signal.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <map>
 #include <memory>
 
 #include "commands.hpp"
@@ -34,6 +37,54 @@ void wait_for_signal_or(double seconds) {
   sigtimedwait(&set, nullptr, &ts);
 }
 
+// --pose JOINT=DEG[,JOINT=DEG...]: the joints' angles when the boards power up (the rest at 0), as
+// motor angles per board; on the eye board version and vergence become the pans' (left = version +
+// vergence / 2, right = version - vergence / 2).
+std::map<int, std::array<double, 2>> parse_pose(const std::string& text, const can::HeadConfig& head) {
+  std::map<std::string, double> joints;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t end = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, end - at);
+    const auto eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    bool known = false;
+    for (const auto& j : head.joints) known = known || j.name == name;
+    if (eq == std::string::npos || !known) {
+      throw UsageError("--pose " + text + ": '" + item + "' is not JOINT=DEG with a joint of " + head.source);
+    }
+    char* stop = nullptr;
+    const std::string value = item.substr(eq + 1);
+    const double deg = std::strtod(value.c_str(), &stop);
+    if (value.empty() || *stop != '\0' || !std::isfinite(deg)) {
+      throw UsageError("--pose " + text + ": '" + value + "' (" + name + ") is not an angle in degrees");
+    }
+    joints[name] = deg;
+    at = end + 1;
+  }
+  std::map<int, std::array<double, 2>> boards;
+  for (const auto& b : head.boards) {
+    std::array<double, 2> axis{{0.0, 0.0}};
+    bool posed = false;
+    for (int i = 0; i < 2; ++i) {
+      const int j = b.joints[static_cast<std::size_t>(i)];
+      if (j < 0) continue;
+      const auto it = joints.find(head.joints[static_cast<std::size_t>(j)].name);
+      if (it == joints.end()) continue;
+      axis[static_cast<std::size_t>(i)] = it->second;
+      posed = true;
+    }
+    if (!posed) continue;
+    if (b.coupling) {
+      const auto& m = b.coupling->j2m;  // motors = j2m * joints
+      boards[b.address] = {m[0][0] * axis[0] + m[0][1] * axis[1], m[1][0] * axis[0] + m[1][1] * axis[1]};
+    } else {
+      boards[b.address] = axis;
+    }
+  }
+  return boards;
+}
+
 }  // namespace
 
 int cmd_can_sim(Args& args) {
@@ -42,6 +93,7 @@ int cmd_can_sim(Args& args) {
   const auto log_path = args.option("--log");
   const auto duration = args.option("--duration");
   const auto flash_dir = args.option("--flash-dir");
+  const auto pose = args.option("--pose");
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
   if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/generated/head.ini)");
@@ -59,7 +111,9 @@ int cmd_can_sim(Args& args) {
   const can::HeadConfig head = can::read_head_config(dev::Property::from_ini_file(*from));
   std::unique_ptr<can::Bus> bus = can::open_bus(*bus_spec);
   if (log_path) bus = std::make_unique<can::LoggingBus>(std::move(bus), std::make_shared<can::CandumpWriter>(*log_path));
+  const auto posed = pose ? parse_pose(*pose, head) : std::map<int, std::array<double, 2>>{};
   can::sim::SimulatedHead sim(head, std::move(bus), {}, flash_dir.value_or(""));
+  for (const auto& [address, motors] : posed) sim.power_up_at(address, motors[0], motors[1]);
   std::string boards;
   for (const auto& b : head.boards) {
     boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address) +

@@ -21,6 +21,7 @@ int cmd_ls(Args& args);
 int cmd_dev(Args& args);
 int cmd_can_sim(Args& args);
 int cmd_can_home(Args& args);
+int cmd_can_zero(Args& args);
 int cmd_can_flash(Args& args);
 int cmd_detect(Args& args);
 

@@ -45,7 +45,48 @@ double RobogeneCan::acceleration_counts(int j, double deg_per_s2) const {
   return round_to(deg_per_s2 * joint(j).counts_per_degree, 1000, 32767000);
 }
 
+void RobogeneCan::require_homed(int j) {
+  const JointConfig& jc = joint(j);
+  {
+    // Homed once is not enough: a board that was reset, or given another zero, reports not_configured
+    // in its status broadcast (sent on every change) until it has homed the joint again.
+    const BoardLink::BoardState s = link_->state(jc.board);
+    const bool unconfigured = s.status_time && s.mode[static_cast<std::size_t>(jc.axis)] == ControlMode::not_configured;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (homed_[static_cast<std::size_t>(j)] && !unconfigured) return;
+    homed_[static_cast<std::size_t>(j)] = false;
+  }
+  const JointEncoderReading r = read_joint_encoder(*link_, head_, jc);
+  if (!r.homed) {
+    std::string why = "its joint encoder is " + r.state;
+    if (!r.zero_stored) {
+      why += ", and its board has no zero stored (measure and store it: robogene can-zero, docs/fabricate.md \"Homing\")";
+    } else if (r.state == "ok" && r.joint_degrees) {
+      why += ", but with the stored zero (" + std::to_string(r.zero) + ") it reads " + std::to_string(*r.joint_degrees) +
+             " deg, outside the joint's range: a wrong zero or a slipped magnet";
+    }
+    throw Error("joint " + jc.name + " is not homed (board " + std::to_string(jc.board) + " keeps it not_configured): " + why);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  homed_[static_cast<std::size_t>(j)] = true;
+  // The board refused the modes sent while it was not homed: send the next one again.
+  commanded_mode_[static_cast<std::size_t>(j)] = ControlMode::not_configured;
+}
+
+JointEncoderReading RobogeneCan::joint_encoder(int j) { return read_joint_encoder(*link_, head_, joint(j)); }
+
+JointEncoderReading RobogeneCan::store_joint_encoder_zero(int j, std::uint16_t zero) {
+  const JointConfig& jc = joint(j);
+  {
+    // Whether the board homes the joint from the new zero or not, it is asked again before the next move.
+    std::lock_guard<std::mutex> lock(mutex_);
+    homed_[static_cast<std::size_t>(j)] = jc.joint_encoder_bits == 0;
+  }
+  return can::store_joint_encoder_zero(*link_, head_, jc, zero);
+}
+
 void RobogeneCan::ensure_mode(int j, ControlMode mode) {
+  require_homed(j);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (commanded_mode_[static_cast<std::size_t>(j)] == mode) return;
@@ -114,6 +155,8 @@ bool RobogeneCan::open(const dev::Searchable& config) {
   ref_acceleration_.assign(n, acceleration);
   ref_velocity_.assign(n, 0.0);
   commanded_mode_.assign(n, ControlMode::position);
+  homed_.assign(n, true);
+  for (std::size_t j = 0; j < n; ++j) homed_[j] = head_.joints[j].joint_encoder_bits == 0;
   try {
     configure_boards(acceleration);
     // Every board must be heard before the device counts as open.
@@ -128,6 +171,15 @@ bool RobogeneCan::open(const dev::Searchable& config) {
   } catch (...) {
     link_.reset();
     throw;
+  }
+  // The joints their boards could not home from their joint encoders stay not_configured: say so now.
+  for (std::size_t j = 0; j < n; ++j) {
+    if (homed_[j]) continue;
+    try {
+      require_homed(static_cast<int>(j));
+    } catch (const Error& e) {
+      log::warn(kWho, e.what());
+    }
   }
   running_ = true;
   refresher_ = std::thread([this] { refresh_velocities(); });

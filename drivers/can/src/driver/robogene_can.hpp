@@ -23,6 +23,7 @@
 
 #include "board_link.hpp"
 #include "robogene/can/head_config.hpp"
+#include "robogene/can/joint_encoders.hpp"
 #include "robogene/dev/device_driver.hpp"
 #include "robogene/dev/generated/icontrolmode.hpp"
 #include "robogene/dev/generated/iencoders.hpp"
@@ -48,6 +49,12 @@ class RobogeneCan final : public dev::DeviceDriver,
 
   // The last failure, as logged ("" when none): what a false return meant.
   std::string last_error() const;
+
+  // A joint's absolute encoder as its board reads it (raw angle, state, stored zero, homed), and
+  // storing its zero in the board's flash (robogene/can/joint_encoders.hpp); both throw robogene::Error
+  // naming the joint (no encoder, a zero beyond its bits, the board not taking it).
+  JointEncoderReading joint_encoder(int j);
+  JointEncoderReading store_joint_encoder_zero(int j, std::uint16_t zero);
 
   bool getAxes(std::int32_t& ax) override;
   bool setRefAcceleration(int j, double acc) override;
@@ -126,6 +133,8 @@ class RobogeneCan final : public dev::DeviceDriver,
   void send(int j, const Message& m);
   Envelope request(int j, const Message& m);
   void ensure_mode(int j, ControlMode mode);
+  // A joint with a joint encoder runs only once its board has homed it from it; throws naming why not.
+  void require_homed(int j);
   double speed_counts(int j, double deg_per_s) const;
   double acceleration_counts(int j, double deg_per_s2) const;
   BoardLink::BoardState fresh_state(int j) const;
@@ -138,6 +147,7 @@ class RobogeneCan final : public dev::DeviceDriver,
   mutable std::mutex mutex_;
   std::vector<double> ref_speed_, ref_acceleration_, ref_velocity_;
   std::vector<ControlMode> commanded_mode_;
+  std::vector<bool> homed_;  // per joint: homed by its board (always true without a joint encoder)
   std::string last_error_;
   std::atomic<bool> running_{false};
   std::thread refresher_;

@@ -219,6 +219,7 @@ bool RobogeneCan::getControlModes(std::vector<dev::ControlMode>& modes) {
 bool RobogeneCan::setControlMode(int j, dev::ControlMode mode) {
   return guarded("setControlMode", j, [&] {
     const ControlMode wanted = to_board(mode);
+    if (wanted == ControlMode::position || wanted == ControlMode::velocity) require_homed(j);
     send(j, SetControlMode{wanted});
     // Setting a mode has no reply: ask, so a mode the board refuses is reported, not assumed.
     const ControlMode now = std::get<GetControlModeReply>(request(j, GetControlMode{}).message).mode;

@@ -9,6 +9,7 @@
 #include "core_params.hpp"
 #include "rg_board.h"
 #include "rg_boot.h"
+#include "rg_joint_encoder.h"
 #include "robogene/can/firmware_image.hpp"
 #include "robogene/can/sim/sim_flash.hpp"
 #include "robogene/error.hpp"
@@ -34,6 +35,11 @@ struct BoardSim::Model {
   std::array<bool, 2> brake_fitted{{false, false}};
   std::array<bool, 2> brake_gate_released{{false, false}};
   std::vector<BrakeChange> brake_changes;
+  // The joint encoders: the raw angle at the joint's 0, the fault simulated, and the zero the board's
+  // settings flash keeps (it survives power cycles, as the flash page does).
+  std::array<std::uint16_t, 2> magnet{{0, 0}};
+  std::array<JointEncoderFault, 2> joint_fault{{JointEncoderFault::none, JointEncoderFault::none}};
+  std::array<std::optional<std::uint16_t>, 2> stored_zero;
   std::uint64_t periods = 0;
   rg_board_params_t params{};  // kept for a simulated power-up
   double pwm_full_scale = 1.0;
@@ -72,6 +78,19 @@ std::uint32_t supply_mv(void* ctx) {
 }
 
 bool bridge_fault(void* ctx) { return model_of(ctx).bridge_fault; }
+
+// The AS5048A facing the joint's magnet: 14 bits a turn, counting up with the joint angle.
+std::uint16_t joint_encoder_frame(void* ctx, unsigned axis) {
+  const Model& s = model_of(ctx);
+  const JointEncoderFault fault = s.joint_fault[axis];
+  if (fault == JointEncoderFault::missing) return 0x0000;
+  const long steps = std::lround(s.motors[axis].joint_degrees() * 16384.0 / 360.0) + s.magnet[axis];
+  const auto raw = static_cast<std::uint16_t>(((steps % 16384) + 16384) % 16384);
+  const std::uint16_t frame = rg_as5048a_frame(raw, fault == JointEncoderFault::error_flag);
+  return fault == JointEncoderFault::bad_parity ? static_cast<std::uint16_t>(frame ^ 0x0004u) : frame;
+}
+
+void save_joint_zero(void* ctx, unsigned axis, std::uint16_t zero) { model_of(ctx).stored_zero[axis] = zero; }
 
 void set_pwm(void* ctx, unsigned m, std::int32_t duty, bool enabled) {
   Model& s = model_of(ctx);
@@ -147,6 +166,10 @@ void reset(Model& s) {
   s.brake_gate_released = {false, false};
   s.pending = Model::Switch::none;
   s.in_bootloader = !rg_boot_image_valid(&s.boot_hal, &s.target);
+  for (std::size_t i = 0; i < 2; ++i) {  // what the firmware's start-up reads from the settings page
+    s.params.axes[i].joint_zero_stored = s.stored_zero[i].has_value();
+    s.params.axes[i].joint_zero = s.stored_zero[i].value_or(0);
+  }
   if (s.in_bootloader) {
     rg_boot_init(&s.boot, s.params.address, &s.target, &s.boot_hal);
   } else {
@@ -193,13 +216,16 @@ BoardSim::BoardSim(const HeadConfig& head, const BoardConfig& board, const Motor
       }
     }
     s.motors[i] = DcMotor(mp);
+    // An arbitrary, fixed magnet angle per board and axis; the board's flash starts calibrated to it.
+    s.magnet[i] = static_cast<std::uint16_t>((board.address * 5003 + static_cast<int>(i) * 7919 + 1234) % 16384);
+    if (p.axes[i].present && p.axes[i].joint_encoder_bits > 0) s.stored_zero[i] = s.magnet[i];
     // As the core: a brake output only where motor i drives axis i alone.
     s.brake_fitted[i] = !board.coupling && p.axes[i].present && p.axes[i].has_brake;
     s.motors[i].set_braked(s.brake_fitted[i]);
   }
   s.pwm_full_scale = head.pwm_full_scale;
   s.hal = rg_hal_t{&s, encoder_raw, current_ma, supply_mv, bridge_fault, set_pwm, can_send, nullptr, nullptr,
-                   enter_bootloader, set_brake};
+                   enter_bootloader, set_brake, joint_encoder_frame, save_joint_zero};
   s.params = p;
   s.target = rg_image_target_t{ROBOGENE_CAN_BOARD_TYPE_ROBOGENE_MOTOR_BOARD, p.board_id,
                                static_cast<std::uint8_t>(board_revision())};
@@ -268,5 +294,15 @@ std::vector<BrakeChange> BoardSim::take_brake_changes() {
   return out;
 }
 void BoardSim::set_bridge_fault(bool asserted) { model_->bridge_fault = asserted; }
+std::uint16_t BoardSim::joint_encoder_magnet(int axis) const { return model_->magnet[static_cast<std::size_t>(axis & 1)]; }
+void BoardSim::set_joint_encoder_fault(int axis, JointEncoderFault fault) {
+  model_->joint_fault[static_cast<std::size_t>(axis & 1)] = fault;
+}
+void BoardSim::set_stored_joint_zero(int axis, std::optional<std::uint16_t> zero) {
+  model_->stored_zero[static_cast<std::size_t>(axis & 1)] = zero;
+}
+std::optional<std::uint16_t> BoardSim::stored_joint_zero(int axis) const {
+  return model_->stored_zero[static_cast<std::size_t>(axis & 1)];
+}
 
 }  // namespace robogene::can::sim

@@ -25,6 +25,8 @@ rg_axis_params_t axis_params(const JointConfig& jc) {
   p.max_speed = static_cast<std::int32_t>(std::lround(jc.max_velocity * jc.counts_per_degree));
   p.current_limit_ma = static_cast<std::int32_t>(std::lround(jc.current_limit));
   p.has_brake = jc.has_brake;
+  p.counts_per_degree = static_cast<float>(jc.counts_per_degree);
+  p.joint_encoder_bits = static_cast<std::uint8_t>(jc.joint_encoder_bits);
   p.pid.kp = fit_i16(jc.pid.kp, jc.name + " kp");
   p.pid.ki = fit_i16(jc.pid.ki, jc.name + " ki");
   p.pid.kd = fit_i16(jc.pid.kd, jc.name + " kd");

@@ -90,6 +90,26 @@ bool SimulatedHead::in_bootloader(int address) {
   return board(address).in_bootloader();
 }
 
+std::uint16_t SimulatedHead::joint_encoder_magnet(int address, int axis) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).joint_encoder_magnet(axis);
+}
+
+void SimulatedHead::set_joint_encoder_fault(int address, int axis, JointEncoderFault fault) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).set_joint_encoder_fault(axis, fault);
+}
+
+void SimulatedHead::set_stored_joint_zero(int address, int axis, std::optional<std::uint16_t> zero) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).set_stored_joint_zero(axis, zero);
+}
+
+std::optional<std::uint16_t> SimulatedHead::stored_joint_zero(int address, int axis) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).stored_joint_zero(axis);
+}
+
 void SimulatedHead::power_cycle(int address) {
   std::lock_guard<std::mutex> lock(mutex_);
   board(address).power_cycle();

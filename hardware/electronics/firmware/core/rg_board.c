@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "rg_broadcasts.h"
+#include "rg_joint_homing.h"
 #include "rg_wire.h"
 #include "generated/robogene_can_motor_control.h"
 
@@ -70,6 +71,7 @@ void rg_board_init(rg_board_t *b, const rg_board_params_t *params, const rg_hal_
   for (unsigned m = 0; m < 2u; ++m) b->motors[m].active_limit_ma = b->motors[m].current_limit_ma;
   read_encoders(b, true);
   for (unsigned i = 0; i < 2u; ++i) rg_trajectory_hold(&b->axes[i].traj, (float)b->axes[i].measured);
+  rg_joint_homing_init(b);
 }
 
 void rg_board_set_mode(rg_board_t *b, unsigned axis, uint8_t mode) {
@@ -123,13 +125,15 @@ static void check_faults(rg_board_t *b) {
     const uint8_t over = coupled ? motor_faults : (b->motors[i].overcurrent_periods >= RG_OVERCURRENT_PERIODS
                                                        ? ROBOGENE_CAN_AXIS_FAULTS_OVERCURRENT : 0u);
     const uint8_t now = (uint8_t)(board_faults | over);
+    // The joint encoder is reported, but stops nothing: a homed axis's loop runs on the motor encoder.
+    const uint8_t reported = (uint8_t)(now | rg_joint_homing_faults(b, i));
     if (a->mode == ROBOGENE_CAN_CONTROL_MODE_HARDWARE_FAULT) {
-      a->faults |= now;  // latched until force_idle
+      a->faults |= reported;  // latched until force_idle
     } else if (now != 0u && running(a->mode)) {
       rg_board_set_mode(b, i, ROBOGENE_CAN_CONTROL_MODE_HARDWARE_FAULT);
-      a->faults = now;
+      a->faults = reported;
     } else {
-      a->faults = now;
+      a->faults = reported;
     }
   }
 }
@@ -236,6 +240,7 @@ void rg_board_tick(rg_board_t *b) {
   ++b->tick;
   const float dt = rg_board_period_s(b);
   read_encoders(b, false);
+  rg_joint_homing_tick(b);
   check_faults(b);
   for (unsigned i = 0; i < 2u; ++i) {
     rg_axis_t *a = &b->axes[i];

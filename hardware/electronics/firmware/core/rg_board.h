@@ -16,6 +16,7 @@
 #include "rg_encoder.h"
 #include "rg_hal.h"
 #include "rg_homing.h"
+#include "rg_joint_encoder.h"
 #include "rg_pid.h"
 #include "rg_trajectory.h"
 
@@ -27,7 +28,7 @@ enum { RG_COUPLING_NONE = 0, RG_COUPLING_VERSION_VERGENCE = 1 };  // robogene_co
 
 // Firmware identity in the get_firmware_version reply.
 #define RG_FIRMWARE_VERSION 2u
-#define RG_FIRMWARE_REVISION 0u
+#define RG_FIRMWARE_REVISION 1u  // 2.1: the joint encoders read, protocol 1.1
 #define RG_FIRMWARE_BUILD 0u
 
 // Supply window outside which the bridges stay off (mV): the drivers' 12 V rail.
@@ -44,6 +45,13 @@ typedef struct {
   int32_t max_speed;                   // counts/s
   int32_t current_limit_ma;            // per motor of the axis
   bool has_brake;                      // the axis's motor has a power-off holding brake (uncoupled boards only)
+  float counts_per_degree;             // of the joint, on the wire
+  // An absolute joint encoder (AS5048A) at the joint: its bits (0: none; the axis then homes, if at all,
+  // against a hard stop) and the raw angle at which the joint is at 0 deg, measured on each built head
+  // (the magnet is bonded at any angle) and kept in the board's settings flash.
+  uint8_t joint_encoder_bits;
+  bool joint_zero_stored;
+  uint16_t joint_zero;
   rg_pid_gains_t pid;
   rg_homing_config_t homing;
 } rg_axis_params_t;
@@ -77,6 +85,11 @@ typedef struct {
   float speed, accel;            // filtered, counts/s and counts/s^2
   rg_homing_config_t homing_config;
   rg_homing_t homing;
+  // The joint encoder (axes with joint_encoder_bits only): its frames, and whether the axis has taken
+  // its position from it. Until it has, the axis is not_configured and refuses every control mode.
+  rg_joint_encoder_t joint_encoder;
+  bool joint_homed;
+  bool joint_out_of_range;       // the encoder's angle, less the zero, lies outside the joint's range
 } rg_axis_t;
 
 typedef struct {

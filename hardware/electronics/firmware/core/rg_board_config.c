@@ -14,6 +14,8 @@ static void axis_from_config(const robogene_axis_config_t *c, rg_axis_params_t *
   p->max_speed = c->max_speed;
   p->current_limit_ma = c->current_limit;
   p->has_brake = c->has_brake != 0u;
+  p->counts_per_degree = c->counts_per_degree;
+  p->joint_encoder_bits = c->joint_encoder_bits;
   p->pid.kp = c->kp;
   p->pid.ki = c->ki;
   p->pid.kd = c->kd;

@@ -49,6 +49,12 @@ typedef struct rg_hal {
   // Release (true) or apply (false) the power-off holding brake of motor 0 or 1: the brake output's
   // gate (board revision D). Called only for motors whose axis has_brake; may be NULL (no brake outputs).
   void (*set_brake)(void *ctx, unsigned motor, bool released);
+  // One 16-bit SPI frame from joint encoder 0 or 1, the one on the connector beside motor 0 or 1 (axis i's;
+  // on the eye board the left and right pan's): what came back on its data line for the 0xFFFF (read angle)
+  // it was sent. Called only where the axis table gives encoder bits; may be NULL (no SPI: it reads as missing).
+  uint16_t (*joint_encoder_frame)(void *ctx, unsigned encoder);
+  // Keep joint encoder 0's or 1's zero across resets (flash on the board); may be NULL.
+  void (*save_joint_zero)(void *ctx, unsigned encoder, uint16_t zero);
 } rg_hal_t;
 
 #ifdef __cplusplus

@@ -9,7 +9,10 @@
 
 bool rg_homing_start(struct rg_board *b, unsigned axis, int16_t pwm_limit, float speed) {
   rg_axis_t *a = &b->axes[axis];
-  if (!a->present || a->homing_config.direction == 0 || a->mode == ROBOGENE_CAN_CONTROL_MODE_HARDWARE_FAULT) {
+  // An axis with a joint encoder is homed from it (rg_joint_homing.c), never against a stop: a stop run would
+  // let it move before its encoder gave it a position.
+  if (!a->present || a->homing_config.direction == 0 || a->mode == ROBOGENE_CAN_CONTROL_MODE_HARDWARE_FAULT ||
+      b->params.axes[axis].joint_encoder_bits > 0u) {
     return false;
   }
   rg_board_set_mode(b, axis, ROBOGENE_CAN_CONTROL_MODE_IDLE);  // a fresh start: reference where the axis is

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "rg_board.h"
+#include "rg_joint_homing.h"
 #include "rg_wire.h"
 #include "generated/robogene_can_motor_control.h"
 
@@ -47,6 +48,12 @@ static bool known_mode(uint8_t m) {
 
 static void set_control_mode(const command_t *c, uint8_t mode) {
   rg_axis_t *a = c->a;
+  // An axis whose joint encoder has not given it its position stays not_configured: no loop may run
+  // on a zero that is wherever the motor encoder started.
+  if (rg_joint_homing_blocks(c->b, c->axis)) {
+    if (mode == ROBOGENE_CAN_CONTROL_MODE_FORCE_IDLE) a->faults = 0;
+    return;
+  }
   if (mode == ROBOGENE_CAN_CONTROL_MODE_FORCE_IDLE) {
     a->faults = 0;  // leave the fault; a condition still present is reported again next period
     rg_board_set_mode(c->b, c->axis, ROBOGENE_CAN_CONTROL_MODE_IDLE);
@@ -74,6 +81,19 @@ static void firmware_version(const command_t *c) {
   reply(c, r + 1, sizeof r);
 }
 
+static void joint_encoder(const command_t *c) {
+  const rg_axis_params_t *p = &c->b->params.axes[c->axis];
+  const rg_joint_encoder_t *e = &c->a->joint_encoder;
+  const bool has = p->joint_encoder_bits > 0u;
+  uint8_t r[ROBOGENE_CAN_LEN_GET_JOINT_ENCODER_REPLY] = {0};
+  rg_put_u16(r + ROBOGENE_CAN_GET_JOINT_ENCODER_REPLY_RAW_ANGLE_BYTE, has ? e->angle : 0u);
+  r[ROBOGENE_CAN_GET_JOINT_ENCODER_REPLY_STATE_BYTE] = has ? e->state : ROBOGENE_CAN_JOINT_ENCODER_STATE_NONE;
+  rg_put_u16(r + ROBOGENE_CAN_GET_JOINT_ENCODER_REPLY_ZERO_BYTE, p->joint_zero);
+  r[ROBOGENE_CAN_GET_JOINT_ENCODER_REPLY_ZERO_STORED_BYTE] = (uint8_t)p->joint_zero_stored;
+  r[ROBOGENE_CAN_GET_JOINT_ENCODER_REPLY_HOMED_BYTE] = (uint8_t)(has && c->a->joint_homed);
+  reply(c, r + 1, sizeof r);
+}
+
 // The request's data length for each command code; 0 for codes this board does not know.
 static uint8_t request_length(unsigned code) {
   switch (code) {
@@ -87,6 +107,7 @@ static uint8_t request_length(unsigned code) {
     RG_CMD(GET_MAX_VELOCITY) RG_CMD(SET_CURRENT_LIMIT) RG_CMD(SET_BROADCAST_POLICY) RG_CMD(SET_POSITION_PID)
     RG_CMD(GET_POSITION_PID) RG_CMD(SET_POSITION_PID_LIMITS) RG_CMD(GET_POSITION_PID_LIMITS)
     RG_CMD(SET_VELOCITY_TIMEOUT) RG_CMD(GET_FIRMWARE_VERSION) RG_CMD(CALIBRATE_ENCODER)
+    RG_CMD(SET_JOINT_ENCODER_ZERO) RG_CMD(GET_JOINT_ENCODER)
 #undef RG_CMD
     default:
       return 0;
@@ -233,6 +254,12 @@ static void execute(const command_t *c, unsigned code) {
     }
     case ROBOGENE_CAN_CMD_GET_FIRMWARE_VERSION:
       firmware_version(c);
+      break;
+    case ROBOGENE_CAN_CMD_SET_JOINT_ENCODER_ZERO:
+      (void)rg_joint_homing_set_zero(b, c->axis, rg_get_u16(d + ROBOGENE_CAN_SET_JOINT_ENCODER_ZERO_ZERO_BYTE));
+      break;
+    case ROBOGENE_CAN_CMD_GET_JOINT_ENCODER:
+      joint_encoder(c);
       break;
     case ROBOGENE_CAN_CMD_CALIBRATE_ENCODER: {
       if (d[ROBOGENE_CAN_CALIBRATE_ENCODER_TYPE_BYTE] != ROBOGENE_CAN_CALIBRATION_TYPE_HARD_STOP) break;

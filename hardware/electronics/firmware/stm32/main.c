@@ -3,7 +3,8 @@
 //
 // The motor board's firmware: the control core (../core) on this board's hardware. One image per
 // board of the head (ROBOGENE_BOARD_ADDRESS picks its entry of the generated board table); the CAN
-// address set_board_id stores in flash replaces the table's. The main loop polls: CAN frames go to
+// address set_board_id stores in flash replaces the table's, and each axis's joint-encoder zero
+// (set_joint_encoder_zero) is read from the same flash page. The main loop polls: CAN frames go to
 // the core as they come, and every 1 ms (SysTick) the core runs one control period, after which
 // the watchdog is refreshed.
 #include <stdbool.h>
@@ -13,6 +14,7 @@
 #include "fdcan.h"
 #include "gpio.h"
 #include "handoff.h"
+#include "joint_encoders.h"
 #include "motor_io.h"
 #include "rg_board.h"
 #include "rg_board_config.h"
@@ -26,7 +28,10 @@
 #endif
 
 static rg_board_t board;
-static int pending_address = -1;  // set_board_id's new address, written to flash when the axes rest
+// What the settings page holds, and whether set_board_id or set_joint_encoder_zero changed it since: it is
+// written when the axes rest (erasing the page stalls the CPU for about 22 ms).
+static settings_t settings;
+static bool settings_changed = false;
 
 static uint16_t hal_encoder(void *ctx, unsigned m) {
   (void)ctx;
@@ -58,7 +63,19 @@ static bool hal_send(void *ctx, const rg_can_frame_t *f) {
 }
 static void hal_save_address(void *ctx, uint8_t address) {
   (void)ctx;
-  pending_address = address;
+  settings.has_address = true;
+  settings.address = address;
+  settings_changed = true;
+}
+static uint16_t hal_joint_encoder_frame(void *ctx, unsigned axis) {
+  (void)ctx;
+  return joint_encoders_frame(axis);
+}
+static void hal_save_joint_zero(void *ctx, unsigned axis, uint16_t zero) {
+  (void)ctx;
+  settings.has_joint_zero[axis & 1u] = true;
+  settings.joint_zero[axis & 1u] = zero;
+  settings_changed = true;
 }
 
 static void hal_can_errors(void *ctx, uint8_t *tx, uint8_t *rx, uint8_t *status) {
@@ -74,8 +91,9 @@ static void hal_enter_bootloader(void *ctx) {
   handoff_reset_into_bootloader();
 }
 
-static const rg_hal_t hal = {0,       hal_encoder, hal_current,      hal_supply,     hal_fault,           hal_pwm,
-                             hal_send, hal_save_address, hal_can_errors, hal_enter_bootloader, hal_brake};
+static const rg_hal_t hal = {0,        hal_encoder,      hal_current,    hal_supply,           hal_fault,
+                             hal_pwm,  hal_send,         hal_save_address, hal_can_errors,     hal_enter_bootloader,
+                             hal_brake, hal_joint_encoder_frame, hal_save_joint_zero};
 
 static bool axes_at_rest(void) {
   for (unsigned i = 0; i < 2u; ++i) {
@@ -101,13 +119,20 @@ int main(void) {
       clock_delay_us(100000u);
     }
   }
-  params.address = settings_address(params.address);
+  settings_load(&settings);
+  if (settings.has_address) params.address = settings.address;
+  for (unsigned i = 0; i < 2u; ++i) {
+    params.axes[i].joint_zero_stored = settings.has_joint_zero[i];
+    params.axes[i].joint_zero = settings.joint_zero[i];
+  }
   // Only a braked axis's pin becomes an output; the others stay as reset left them, held low by their pull-downs.
   unsigned brakes = 0u;
   for (unsigned i = 0; i < 2u; ++i) {
     if (params.coupling == RG_COUPLING_NONE && params.axes[i].present && params.axes[i].has_brake) brakes |= 1u << i;
   }
   motor_io_init(params.pwm_full_scale, brakes);
+  // SPI1 and the chip selects also on a board whose axes have no joint encoder: the selects then stay high.
+  joint_encoders_init();
   fdcan_init(params.address);
   rg_board_init(&board, &params, &hal);
   watchdog_start();
@@ -134,9 +159,9 @@ int main(void) {
       filtered_address = board.address;
       fdcan_init(filtered_address);
     }
-    if (pending_address >= 0 && axes_at_rest()) {
-      (void)settings_save_address((uint8_t)pending_address);
-      pending_address = -1;
+    if (settings_changed && axes_at_rest()) {
+      (void)settings_store(&settings);
+      settings_changed = false;
     }
     watchdog_refresh();
     gpio_write(GPIOB_BASE, PIN_BOOT0, (++led / 500u) & 1u);  // 1 Hz blink: the loop is alive

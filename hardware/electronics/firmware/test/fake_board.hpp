@@ -3,12 +3,14 @@
 //
 // A control core on a fake HAL for its unit tests: two motors as first-order plants in encoder
 // counts (speed follows duty, current follows duty minus back-EMF, a hard stop where asked),
-// settable supply, bridge fault and forced currents, and the frames the core sent.
+// settable supply, bridge fault and forced currents, the frames each joint encoder answers (none set:
+// 0x0000, a missing encoder's pulled-down line), and the frames the core sent.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -59,6 +61,10 @@ struct FakeBoard {
   bool brake_released[2] = {false, false};  // the brake pins' level as the core last set it (low after reset)
   int brake_writes[2] = {0, 0};
   std::vector<OutputCall> outputs;
+  // What axis 0's or 1's joint encoder answers to each SPI frame; frames read, per axis.
+  std::function<std::uint16_t(unsigned)> joint_frames;
+  int joint_frames_read[2] = {0, 0};
+  std::vector<std::pair<unsigned, std::uint16_t>> saved_zeros;
 
   static FakeBoard& of(void* ctx) { return *static_cast<FakeBoard*>(ctx); }
 
@@ -109,6 +115,11 @@ struct FakeBoard {
     };
     hal.save_address = [](void* c, std::uint8_t a) { of(c).saved_addresses.push_back(a); };
     hal.enter_bootloader = [](void* c) { ++of(c).bootloader_requests; };
+    hal.joint_encoder_frame = [](void* c, unsigned axis) -> std::uint16_t {
+      ++of(c).joint_frames_read[axis];
+      return of(c).joint_frames ? of(c).joint_frames(axis) : 0u;
+    };
+    hal.save_joint_zero = [](void* c, unsigned axis, std::uint16_t zero) { of(c).saved_zeros.emplace_back(axis, zero); };
   }
   FakeBoard(const FakeBoard&) = delete;
 

@@ -45,6 +45,7 @@ struct JointConfig {
   double max_velocity = 0;        // deg/s
   double current_limit = 0;       // mA
   bool has_brake = false;         // its motor has a power-off holding brake on the board's brake output
+  int joint_encoder_bits = 0;     // its absolute joint encoder's bits (0: none): the board homes it from it
   PidGains pid;
   HomingConfig homing;
 };

@@ -16,13 +16,13 @@ import re
 from dataclasses import dataclass
 from typing import ClassVar, NamedTuple, Optional, Union
 
-__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BootStatus", "BootloaderErase", "BootloaderEraseReply", "BootloaderIdentify", "BootloaderIdentifyReply", "BootloaderStart", "BootloaderStartReply", "BootloaderVerify", "BootloaderVerifyReply", "BootloaderWrite", "BootloaderWriteReply", "BroadcastMask", "BroadcastType", "CalibrateEncoder", "CalibrationType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "EnterBootloader", "Envelope", "FIRST_BOARD_ADDRESS", "FirmwareStage", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
+__all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags", "BoardType", "BootStatus", "BootloaderErase", "BootloaderEraseReply", "BootloaderIdentify", "BootloaderIdentifyReply", "BootloaderStart", "BootloaderStartReply", "BootloaderVerify", "BootloaderVerifyReply", "BootloaderWrite", "BootloaderWriteReply", "BroadcastMask", "BroadcastType", "CalibrateEncoder", "CalibrationType", "CanStatus", "CodecError", "Command", "ControlMode", "CurrentBroadcast", "DESTINATION_MASK", "DESTINATION_SHIFT", "EnterBootloader", "Envelope", "FIRST_BOARD_ADDRESS", "FirmwareStage", "Frame", "GetBoardId", "GetBoardIdReply", "GetControlMode", "GetControlModeReply", "GetDesiredAcceleration", "GetDesiredAccelerationReply", "GetDesiredPosition", "GetDesiredPositionReply", "GetEncoderPosition", "GetEncoderPositionReply", "GetFirmwareVersion", "GetFirmwareVersionReply", "GetJointEncoder", "GetJointEncoderReply", "GetMaxPosition", "GetMaxPositionReply", "GetMaxVelocity", "GetMaxVelocityReply", "GetMinPosition", "GetMinPositionReply", "GetPidOutput", "GetPidOutputReply", "GetPositionPid", "GetPositionPidLimits", "GetPositionPidLimitsReply", "GetPositionPidReply", "HOST_ADDRESS", "JointEncoderState", "LAST_BOARD_ADDRESS", "MESSAGES", "MESSAGE_CLASS_MASK", "MESSAGE_CLASS_SHIFT", "Message", "MessageClass", "MotionDone", "MotionDoneReply", "PROTOCOL_FINGERPRINT", "PROTOCOL_MAJOR", "PROTOCOL_MINOR", "PROTOCOL_NAME", "PidOutputBroadcast", "PositionBroadcast", "PositionMove", "SOURCE_MASK", "SOURCE_SHIFT", "SetBoardId", "SetBroadcastPolicy", "SetControlMode", "SetCurrentLimit", "SetDesiredAcceleration", "SetEncoderPosition", "SetJointEncoderZero", "SetMaxPosition", "SetMaxVelocity", "SetMinPosition", "SetPositionPid", "SetPositionPidLimits", "SetVelocityTimeout", "StatusBroadcast", "StopTrajectory", "SupplyBroadcast", "VelocityBroadcast", "VelocityMove", "broadcast", "command", "decode", "encode", "from_text", "make_id", "reply", "split_id", "to_text"]
 
 PROTOCOL_NAME = "motor_control"
 # First 16 hex digits of the SHA-256 of the protocol's canonical form.
-PROTOCOL_FINGERPRINT = "250b8f75f4216175"
+PROTOCOL_FINGERPRINT = "03c95cd8fdb0f821"
 PROTOCOL_MAJOR = 1
-PROTOCOL_MINOR = 0
+PROTOCOL_MINOR = 1
 BITRATE = 1000000  # bit/s
 HOST_ADDRESS = 0
 FIRST_BOARD_ADDRESS = 1
@@ -89,6 +89,16 @@ class CalibrationType(enum.IntEnum):
     """How an axis finds its zero in calibrate_encoder (the reference's calibration types)."""
 
     HARD_STOP = 0  # Drive against the axis's hard stop at a limited PWM.
+
+
+class JointEncoderState(enum.IntEnum):
+    """Robogene: whether an axis's absolute joint encoder (AS5048A) can be trusted, from the frames the board reads (docs/firmware.md "Joint encoders")."""
+
+    STARTING = 0  # Too few good frames yet.
+    OK = 1
+    ABSENT = 2  # Every frame reads 0x0000: the data line's pull-down, no sensor answering.
+    FAILED = 3  # Frames in a row with bad parity or the sensor's error flag.
+    NONE = 255  # The axis has no joint encoder.
 
 
 class BoardType(enum.IntEnum):
@@ -186,6 +196,8 @@ class Command(enum.IntEnum):
     GET_MAX_VELOCITY = 69
     SET_CURRENT_LIMIT = 72
     SET_BROADCAST_POLICY = 73
+    SET_JOINT_ENCODER_ZERO = 75
+    GET_JOINT_ENCODER = 76
     SET_POSITION_PID = 82
     GET_POSITION_PID = 83
     SET_POSITION_PID_LIMITS = 84
@@ -647,6 +659,48 @@ class SetBroadcastPolicy:
 
 
 @dataclass
+class SetJointEncoderZero:
+    """Robogene (iCub's set_offset_abs_encoder code): store the raw joint-encoder angle at which the joint is at 0 deg in the board's settings flash; an axis that is not running takes its position from its joint encoder again with it. Ignored for a running axis, an axis with no joint encoder or a zero beyond the encoder's bits."""
+
+    NAME: ClassVar[str] = "set_joint_encoder_zero"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.POLLING_MOTOR_CONTROL
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 75
+    LENGTH: ClassVar[int] = 3
+    FIELDS: ClassVar[tuple] = (        _Field("zero", "int", 1, 2, False, 1.0, 0.0, "count", None),    )
+    zero: int = 0
+
+
+@dataclass
+class GetJointEncoder:
+    """Robogene (iCub's get_offset_abs_encoder code): an axis's joint encoder as the board reads it: the last good raw angle, the encoder's state, the stored zero, and whether the axis took its position from it (homed)."""
+
+    NAME: ClassVar[str] = "get_joint_encoder"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.POLLING_MOTOR_CONTROL
+    KIND: ClassVar[str] = "request"
+    CODE: ClassVar[int] = 76
+    LENGTH: ClassVar[int] = 1
+    FIELDS: ClassVar[tuple] = (    )
+
+
+@dataclass
+class GetJointEncoderReply:
+    """Robogene (iCub's get_offset_abs_encoder code): an axis's joint encoder as the board reads it: the last good raw angle, the encoder's state, the stored zero, and whether the axis took its position from it (homed). (reply)"""
+
+    NAME: ClassVar[str] = "get_joint_encoder_reply"
+    MESSAGE_CLASS: ClassVar[MessageClass] = MessageClass.POLLING_MOTOR_CONTROL
+    KIND: ClassVar[str] = "reply"
+    CODE: ClassVar[int] = 76
+    LENGTH: ClassVar[int] = 8
+    FIELDS: ClassVar[tuple] = (        _Field("raw_angle", "int", 1, 2, False, 1.0, 0.0, "count", None),        _Field("state", "enum", 3, 1, False, 1.0, 0.0, "", JointEncoderState),        _Field("zero", "int", 4, 2, False, 1.0, 0.0, "count", None),        _Field("zero_stored", "bool", 6, 1, False, 1.0, 0.0, "", None),        _Field("homed", "bool", 7, 1, False, 1.0, 0.0, "", None),    )
+    raw_angle: int = 0
+    state: JointEncoderState = JointEncoderState.STARTING
+    zero: int = 0
+    zero_stored: bool = False
+    homed: bool = False
+
+
+@dataclass
 class SetPositionPid:
     """Set an axis's position gains; output = (kp e + ki sum(e) + kd de) >> shift."""
 
@@ -1024,9 +1078,9 @@ class BootloaderStartReply:
     status: BootStatus = BootStatus.OK
 
 
-Message = Union[CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply]
+Message = Union[CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetJointEncoderZero, GetJointEncoder, GetJointEncoderReply, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply]
 
-MESSAGES = {m.NAME: m for m in (CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply, )}
+MESSAGES = {m.NAME: m for m in (CalibrateEncoder, GetControlMode, GetControlModeReply, MotionDone, MotionDoneReply, SetControlMode, GetEncoderPosition, GetEncoderPositionReply, GetDesiredPosition, GetDesiredPositionReply, SetDesiredAcceleration, GetDesiredAcceleration, GetDesiredAccelerationReply, PositionMove, VelocityMove, SetEncoderPosition, StopTrajectory, SetBoardId, GetBoardId, GetBoardIdReply, GetPidOutput, GetPidOutputReply, SetMinPosition, GetMinPosition, GetMinPositionReply, SetMaxPosition, GetMaxPosition, GetMaxPositionReply, SetMaxVelocity, GetMaxVelocity, GetMaxVelocityReply, SetCurrentLimit, SetBroadcastPolicy, SetJointEncoderZero, GetJointEncoder, GetJointEncoderReply, SetPositionPid, GetPositionPid, GetPositionPidReply, SetPositionPidLimits, GetPositionPidLimits, GetPositionPidLimitsReply, SetVelocityTimeout, GetFirmwareVersion, GetFirmwareVersionReply, PositionBroadcast, PidOutputBroadcast, StatusBroadcast, CurrentBroadcast, VelocityBroadcast, SupplyBroadcast, EnterBootloader, BootloaderIdentify, BootloaderIdentifyReply, BootloaderErase, BootloaderEraseReply, BootloaderWrite, BootloaderWriteReply, BootloaderVerify, BootloaderVerifyReply, BootloaderStart, BootloaderStartReply, )}
 _COMMANDS = {(m.MESSAGE_CLASS, m.CODE, m.KIND): m for m in MESSAGES.values() if m.KIND != "broadcast"}
 _BROADCASTS = {(m.MESSAGE_CLASS, m.CODE): m for m in MESSAGES.values() if m.KIND == "broadcast"}
 _ADDRESSED_BY_DESTINATION = {MessageClass.POLLING_MOTOR_CONTROL, MessageClass.POLLING_ANALOG_SENSOR, MessageClass.BOOTLOADER}

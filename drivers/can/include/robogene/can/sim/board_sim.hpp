@@ -32,6 +32,14 @@ struct BrakeChange {
   std::uint32_t bridge_periods = 0; // whole periods it had been on
 };
 
+// What an axis's simulated AS5048A joint encoder does wrong (set_joint_encoder_fault).
+enum class JointEncoderFault {
+  none,
+  missing,     // not fitted or unplugged: the board's pull-down reads 0x0000 on every frame
+  bad_parity,  // frames damaged on the cable: one bit flipped
+  error_flag   // the sensor reports an error in an earlier frame (sticky until power-off)
+};
+
 class BoardSim {
  public:
   // Throws robogene::Error when the board's configuration cannot be run by the firmware (a
@@ -60,8 +68,18 @@ class BoardSim {
   ControlMode mode(int axis) const;
   void set_supply_voltage(double volts);
   // A power-on reset with the motors at these joint-side angles: the board counts from 0 there,
-  // as a board without absolute encoders does until it homes.
+  // as a board without absolute encoders does until it homes; an axis with a joint encoder takes its
+  // position from it at once.
   void power_up_at(double motor0_degrees, double motor1_degrees);
+  // The AS5048A of an axis with a joint encoder (joint_encoder_bits in the configuration): the raw
+  // angle it reads with the joint at 0 deg (its magnet is bonded at an arbitrary angle, fixed per
+  // simulated board), and a fault to simulate from the next frame on. The board's settings flash holds
+  // the matching zero from the start (a calibrated head); set_stored_joint_zero changes what it holds,
+  // nullopt: none stored (an uncalibrated board), which the core reads at its next power-up.
+  std::uint16_t joint_encoder_magnet(int axis) const;
+  void set_joint_encoder_fault(int axis, JointEncoderFault fault);
+  void set_stored_joint_zero(int axis, std::optional<std::uint16_t> zero);
+  std::optional<std::uint16_t> stored_joint_zero(int axis) const;
   void set_bridge_fault(bool asserted);
   // The power-off holding brake of motor m: whether the motor has one (its axis's brake in the
   // configuration, on an uncoupled board), and whether it holds the motor now. It holds from

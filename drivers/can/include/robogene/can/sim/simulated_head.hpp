@@ -44,6 +44,12 @@ class SimulatedHead {
   // Each change is logged at info level, naming the board and the joint.
   bool has_brake(int board, int motor);
   bool brake_holding(int board, int motor);
+  // A board's joint encoders (BoardSim::joint_encoder_magnet, set_joint_encoder_fault,
+  // set_stored_joint_zero): faults apply from the next frame, a stored zero at the next power-up.
+  std::uint16_t joint_encoder_magnet(int board, int axis);
+  void set_joint_encoder_fault(int board, int axis, JointEncoderFault fault);
+  void set_stored_joint_zero(int board, int axis, std::optional<std::uint16_t> zero);
+  std::optional<std::uint16_t> stored_joint_zero(int board, int axis);
   // Control periods run so far, and how many frames were not commands the boards understood.
   std::uint64_t ticks() const { return ticks_; }
   std::uint64_t rejected_frames() const { return rejected_; }
