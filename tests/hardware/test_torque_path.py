@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from robogene_head import torque_elements, torque_path
+from robogene_head import docs_sync, torque_elements, torque_path
 from robogene_head_model import drive_limits
 from robogene_head_model.params import ParameterError
 
@@ -313,6 +313,8 @@ def test_a_coupling_rated_below_the_drive_fails_where_its_clamps_hold(tmp_path):
     with pytest.raises(torque_path.TorquePathError, match=r"eyes_tilt\[0\] clamp"):
         torque_path.enforce(weak)
     assert "the coupling's rating" in torque_path.format_table(weak)
+    rows = [r for r in docs_sync.torque_table(json.loads(torque_path.dumps(weak))).splitlines() if "| eyes_tilt | clamp" in r]
+    assert len(rows) == 2 and all("the coupling's rating" in r and "too weak" in r for r in rows)
     strong = _tilt_clamps(torque_path.analyse(_tilt_coupling(tmp_path, rated_torque_Nm=50)))
     assert [e.capacity_Nm for e in strong] == pytest.approx([e.capacity_Nm for e in free])
     assert all(e.rated_Nm == 50 for e in strong)
