@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from robogene_head import torque_elements, torque_path
+from robogene_head import docs_sync, torque_elements, torque_path
 from robogene_head_model import drive_limits
 from robogene_head_model.params import ParameterError
 
@@ -276,3 +276,58 @@ def test_each_belt_stage_is_rated_on_its_own_belt_stock(params):
     belts = {e.joint: e for e in report.elements if e.element == "belt"}
     assert belts["eyes_tilt"].margin == pytest.approx(2.23, abs=0.005) and belts["eyes_tilt"] not in report.failures()
     assert belts["neck_yaw"].margin == pytest.approx(0.10, abs=0.005) and belts["neck_yaw"] in report.failures()
+
+
+def _tilt_coupling(tmp_path, **fields):
+    """The parameter file with the tilt jackshaft's coupling carrying `fields` (a maker's rating, other bores)."""
+    def edit(data):
+        key = data["geometry"]["tilt_jackshaft"]["coupling"]
+        data["purchased"][key].update(fields)
+    return edited(tmp_path, edit)
+
+
+def _tilt_clamps(report):
+    return [e for e in report.elements if e.joint == "eyes_tilt" and e.element == "clamp"]
+
+
+def test_the_tilt_clamps_name_the_coupling_the_jackshaft_draws(params):
+    """The torque path counts the coupling the CAD draws, and the clamp model alone while that part has no rating."""
+    drawn = params.root.node("geometry").node("tilt_jackshaft").text("coupling")
+    named = [e.get("coupling") for e in params.root.node("torque_paths").raw("eyes_tilt") if e["element"] == "clamp"]
+    assert named == [drawn, drawn]
+    for e in _tilt_clamps(torque_path.analyse(params)):
+        assert e.rated_Nm is None
+
+
+def test_a_coupling_rated_below_the_drive_fails_where_its_clamps_hold(tmp_path):
+    """The clamp model lets the coupling's screws hold the tilt's peak with margin; a coupling its maker rates below
+    1.5 x that peak fails both hubs all the same, and one rated above it leaves the clamp model's figures."""
+    free = _tilt_clamps(torque_path.analyse(_tilt_coupling(tmp_path)))
+    peak = free[0].peak_Nm
+    required = torque_path.analyse(_tilt_coupling(tmp_path)).required
+    assert all(e.margin >= required for e in free)
+    weak = torque_path.analyse(_tilt_coupling(tmp_path, rated_torque_Nm=round(peak * 1.2, 3)))
+    failed = [e for e in weak.failures() if e.joint == "eyes_tilt"]
+    assert [e.element for e in failed] == ["clamp", "clamp"]
+    assert all(e.capacity_Nm == pytest.approx(peak * 1.2, abs=1e-3) for e in failed)
+    with pytest.raises(torque_path.TorquePathError, match=r"eyes_tilt\[0\] clamp"):
+        torque_path.enforce(weak)
+    assert "the coupling's rating" in torque_path.format_table(weak)
+    rows = [r for r in docs_sync.torque_table(json.loads(torque_path.dumps(weak))).splitlines() if "| eyes_tilt | clamp" in r]
+    assert len(rows) == 2 and all("the coupling's rating" in r and "too weak" in r for r in rows)
+    strong = _tilt_clamps(torque_path.analyse(_tilt_coupling(tmp_path, rated_torque_Nm=50)))
+    assert [e.capacity_Nm for e in strong] == pytest.approx([e.capacity_Nm for e in free])
+    assert all(e.rated_Nm == 50 for e in strong)
+
+
+def test_a_clamp_naming_a_wrong_coupling_is_refused(tmp_path):
+    """A coupling without a bore for the clamped shaft, or a part that is no coupling, is named where it is set."""
+    with pytest.raises(ParameterError, match=r"torque_paths\.eyes_tilt\[1\]\.coupling: .*none for the element's 6 mm"):
+        torque_path.analyse(_tilt_coupling(tmp_path, bores=[3, 5]))
+    with pytest.raises(ParameterError, match=r"\.bores: expected a list"):
+        torque_path.analyse(_tilt_coupling(tmp_path, bores="3 to 6"))
+
+    def not_a_coupling(data):
+        data["torque_paths"]["eyes_tilt"][0]["coupling"] = "iso4029-M3x4"
+    with pytest.raises(ParameterError, match=r"torque_paths\.eyes_tilt\[0\]\.coupling: 'iso4029-M3x4' is a set_screw"):
+        torque_path.analyse(edited(tmp_path, not_a_coupling))

@@ -89,8 +89,9 @@ def torque_table(data: dict) -> str:
             "|---|---|---|---:|---:|---:|---|"]
     for e in data["elements"]:
         flag = "" if e["ok"] else " **too weak**"
+        rated = "" if e.get("rated_Nm") is None else f" (the coupling's rating: {e['rated_Nm']:g} N m)"
         rows.append(f"| {e['joint']} | {e['element']} | {e['at']} | {e['capacity_Nm']:.3f} | {e['peak_Nm']:.3f} | "
-                    f"{e['margin']:.2f}{flag} | {e['what']} |")
+                    f"{e['margin']:.2f}{flag} | {e['what']}{rated} |")
     rows += ["", "| joint | continuous (N m) | board's current limit (mA) | kt (mN m/A) | at the limit (N m) | "
              "peak at the gearhead shaft (N m) | set by |", "|---|---:|---:|---:|---:|---:|---|"]
     for j, p in data["peaks"].items():

@@ -10,7 +10,9 @@ The peak torque a drive can put through its elements is the larger of
               delivers stalled against a stop or an obstacle, which the board allows. kt = U / omega0 from the motor's
               nominal voltage and no-load speed; the no-load current's voltage drop is left out, which errs high.
 at the gearhead's output shaft (at: gearhead), times the belt stage after it (at: joint). An element that carries less
-slips or breaks before the drive stalls."""
+slips or breaks before the drive stalls. A clamp that is one hub of a purchased coupling (`coupling:`) carries the
+smaller of what its screws' friction holds and the maker's rated torque of the coupling (rated_torque_Nm), where the
+part has one: the rating also bounds the coupling's own body."""
 from __future__ import annotations
 
 import json
@@ -58,6 +60,7 @@ class ElementCheck:
     capacity_Nm: float
     peak_Nm: float          # the drive's peak torque at the element
     margin: float           # capacity / peak
+    rated_Nm: float | None = None   # the maker's rating of the coupling a clamp belongs to, where it has one
 
 
 @dataclass(frozen=True)
@@ -152,6 +155,27 @@ def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
     return rating * (d_motor if at == "gearhead" else d_joint) / d_small
 
 
+def _coupling_rating(params: HeadParameters, item: Node, shaft: float) -> float | None:
+    """The rated torque (N m) of the purchased coupling a clamp element belongs to (`coupling:`), None where the
+    element names none or the part has no rating. The clamp model gives what the screws' friction holds; a maker's
+    rating also bounds what the coupling's body and its slit hubs take, so the element counts the smaller."""
+    if not item.has("coupling"):
+        return None
+    key = item.text("coupling")
+    part = params.purchased(key)
+    if part.text("kind") != "coupling":
+        raise item._fail("coupling", f"{key!r} is a {part.text('kind')}, expected a coupling")
+    bores = part.raw("bores")
+    if not isinstance(bores, list) or not bores or not all(
+            isinstance(b, (int, float)) and not isinstance(b, bool) and b > 0 for b in bores):
+        raise part._fail("bores", f"expected a list of bore diameters (mm), got {bores!r}")
+    if not any(abs(b - shaft) < 1e-6 for b in bores):
+        raise item._fail("coupling", f"{key!r} has bores {bores}, none for the element's {shaft:g} mm shaft")
+    if not part.has("rated_torque_Nm"):
+        return None
+    return part.num("rated_torque_Nm", positive=True)
+
+
 def capacity(params: HeadParameters, joint: str, item: Node, at: str) -> float:
     """N m the element passes, at its own place (the gearhead shaft or the joint)."""
     kind = item.text("element")
@@ -174,10 +198,12 @@ def capacity(params: HeadParameters, joint: str, item: Node, at: str) -> float:
                                           item.num("length", positive=True), _count(item, "flats"),
                                           item.num("pressure_MPa", positive=True))
         if kind == "clamp":
-            return torque_elements.clamp(_shaft(params, joint, item), _count(item, "count"),
-                                         item.num("screw_diameter", positive=True), item.text("strength_class"),
-                                         item.num("thread_friction", positive=True),
+            shaft = _shaft(params, joint, item)
+            held = torque_elements.clamp(shaft, _count(item, "count"), item.num("screw_diameter", positive=True),
+                                         item.text("strength_class"), item.num("thread_friction", positive=True),
                                          item.num("friction", positive=True))
+            rating = _coupling_rating(params, item, shaft)
+            return held if rating is None else min(held, rating)
         if kind == "belt":
             return _belt(params, joint, item, at)
     except torque_elements.ElementError as exc:
@@ -204,8 +230,10 @@ def analyse(params: HeadParameters) -> TorqueReport:
                 raise item._fail("at", f"expected gearhead or joint, got {at!r}")
             demand = p.at_gearhead * (p.belt if at == "joint" else 1.0)
             cap = capacity(params, joint, item, at)
+            rated = _coupling_rating(params, item, _shaft(params, joint, item)) if item.text("element") == "clamp" \
+                else None
             checks.append(ElementCheck(joint, i, item.text("element"), item.text("what"), at, cap, demand,
-                                       cap / demand))
+                                       cap / demand, rated))
     return TorqueReport(required_margin(params), peaks, checks)
 
 
@@ -215,8 +243,9 @@ def format_table(report: TorqueReport) -> str:
              "                                    (N m)     (N m)"]
     for e in report.elements:
         flag = "ok" if e.margin >= report.required else "TOO WEAK"
+        rated = "" if e.rated_Nm is None else f" (the coupling's rating: {e.rated_Nm:g} N m)"
         lines.append(f"{e.joint:<14} {e.element:<10} {e.at:<8} {e.capacity_Nm:9.3f} {e.peak_Nm:7.3f} {e.margin:7.2f}  "
-                     f"{e.what} [{flag}]")
+                     f"{e.what}{rated} [{flag}]")
     lines.append("")
     lines.append("Peak torque at the gearhead's output shaft: the larger of the continuous rating and the board's "
                  "current limit")
