@@ -415,12 +415,12 @@ def test_speed_limit_beyond_the_wire(tree):
 
 
 def test_speed_limit_beyond_the_drive(tree):
-    """neck_yaw: 7800 rpm through 66 x 36/14 is 275.8 deg/s; 300 fits the wire but not the drive."""
-    errs, text = _errors(tree, "integral_limit: 300, max_velocity: 200, current_limit: 1200}",
-                         "integral_limit: 300, max_velocity: 300, current_limit: 1200}")
-    assert errs == [f"{_at(text, 'max_velocity: 300', skip=14)}: error: motor_control.joints.neck_yaw.max_velocity: "
-                    "300 deg/s is faster than the drive can turn the joint: 275.8 deg/s (faulhaber-2224U012SR at its "
-                    "no-load speed through the 169.7:1 reduction)"]
+    """neck_yaw: 7800 rpm through 66 x 20/14 is 496.4 deg/s; 600 fits the wire (321800 count/s) but not the drive."""
+    errs, text = _errors(tree, "integral_limit: 300, max_velocity: 200, current_limit: 550}",
+                         "integral_limit: 300, max_velocity: 600, current_limit: 550}")
+    assert errs == [f"{_at(text, 'max_velocity: 600', skip=14)}: error: motor_control.joints.neck_yaw.max_velocity: "
+                    "600 deg/s is faster than the drive can turn the joint: 496.4 deg/s (faulhaber-2224U012SR at its "
+                    "no-load speed through the 94.29:1 reduction)"]
 
 
 def test_slower_motor_lowers_the_speed_limit(tree):
@@ -473,8 +473,8 @@ def test_mechanics_errors_are_placed_too(tree):
 def test_a_parameter_change_travels_to_every_output(tree):
     path = tree / "hardware" / "head-parameters.yaml"
     text = path.read_text()
-    assert "yaw: {motor_teeth: 14, joint_teeth: 36," in text
-    path.write_text(text.replace("yaw: {motor_teeth: 14, joint_teeth: 36,", "yaw: {motor_teeth: 14, joint_teeth: 40,"))
+    assert "yaw: {motor_teeth: 14, joint_teeth: 20," in text
+    path.write_text(text.replace("yaw: {motor_teeth: 14, joint_teeth: 20,", "yaw: {motor_teeth: 14, joint_teeth: 40,"))
     configs = ["can-driver-config", "firmware-can"]
     outputs = render(tree, configs)
     ini = outputs["drivers/can/generated/head.ini"]

@@ -53,13 +53,18 @@ def test_a_belt_wider_than_the_pulleys_is_named(params, external, tmp_path):
 def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path):
     """The tilt pulleys come out at XL diameters (14T: pitch 22.64, outside 22.13, the catalogue's 28 mm flanges, its
     own rim) and 14.3 mm wide, its belt is cut from the XL stock to 2C + pi (D + d) / 2 + (D - d)^2 / 4C = 269.19 mm
-    at the motor's 85.95 mm, so 53 teeth (106XL), while the yaw stage keeps its MXL pulleys and 56-tooth belt. Moved
-    back to the old 86.05 mm the belt needs 54 teeth."""
+    at the motor's 85.95 mm, so 53 teeth (106XL); the yaw stage's, on the same XL stock from 14T to 20T, 176.1 mm at
+    its jackshaft's 44.6 mm, so 35 teeth (70XL), and a yaw stage back on MXL stock its old 2.032 mm pitch. Moved
+    back to the old 86.05 mm the tilt belt needs 54 teeth."""
     box = mounts.pulley(params, "eyes_tilt", 14, 3).BoundingBox()
     assert (box.xlen, box.zlen) == (pytest.approx(28.0, abs=0.01), pytest.approx(14.3))
-    yaw = mounts.pulley(params, "neck_yaw", 14, 4).BoundingBox()
-    assert (yaw.xlen, yaw.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
-    assert mounts.belts(params) == [("mxl-belt-56T", "neck_yaw", 56), ("xl-belt-53T", "eyes_tilt", 53)]
+    yaw = mounts.pulley(params, "neck_yaw", 20, 15).BoundingBox()
+    assert (yaw.xlen, yaw.zlen) == (pytest.approx(20 * 5.08 / math.pi - 0.508 + 2 * 2.93), pytest.approx(14.3))
+    assert mounts.belts(params) == [("xl-belt-35T", "neck_yaw", 35), ("xl-belt-53T", "eyes_tilt", 53)]
+    mxl = edited(tmp_path, lambda data: data["geometry"]["pulleys"]["yaw"].update(
+        belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5))
+    small = mounts.pulley(mxl, "neck_yaw", 14, 4).BoundingBox()
+    assert (small.xlen, small.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
     old = edited(tmp_path, lambda data: data["geometry"]["head"]["tilt_motor"].update(x=-35, z=85))
     assert mounts.belts(old)[1] == ("xl-belt-54T", "eyes_tilt", 54)
     loop = mounts.belt_loop(params, "eyes_tilt", 85.95, 24, 14)

@@ -46,7 +46,7 @@ def test_quantities_are_counted_from_the_assembly(params, assembly, cat):
     for key, n in bearings.items():
         assert qty[key] == n
     assert qty["raspberrypi-SC0872"] == 2
-    assert {"mxl-belt-56T", "xl-belt-53T"} <= set(qty)
+    assert {"xl-belt-35T", "xl-belt-53T"} <= set(qty)
 
 
 def test_costs_follow_the_price_breaks(params, assembly, cat):

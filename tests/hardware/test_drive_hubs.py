@@ -121,9 +121,10 @@ def test_the_check_sees_a_cad_that_differs_from_the_data(tmp_path, params, neck_
 
 
 def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
-    """Two M4 set screws hold 2 x 1112 N x 3 mm = 6.67 N m: 2.06 times pitch's peak, 2.87 times roll's (its 1.2 A
-    limit). One screw fewer, or two M2 on roll (378 N each: 2.27 N m, 0.97 times its peak), is below the margin, and
-    the check says which."""
+    """Two M4 set screws hold 2 x 1112 N x 3 mm = 6.67 N m: 2.06 times pitch's peak, 3.08 times roll's (its continuous
+    rating: its 1 A limit gives less). One screw fewer on pitch (3.34 N m, 1.03 times its peak), or two M2 on roll
+    (378 N each: 2.27 N m, 1.05 times its peak), is below the margin, and the check says which; one M4 on roll
+    (1.54 times its peak) would pass."""
     report = torque_path.analyse(params)
     for joint in ("neck_pitch", "neck_roll"):
         (element,) = [e for e in report.elements if e.joint == joint]
@@ -134,7 +135,7 @@ def test_pitch_and_roll_pass_and_a_weakened_hub_fails(tmp_path, params):
         for joint in ("neck_pitch", "neck_roll"):
             data["torque_paths"][joint][0]["count"] = 1
     weak = torque_path.analyse(edited(tmp_path, one_screw))
-    assert {e.joint for e in weak.failures()} >= {"neck_pitch", "neck_roll"}
+    assert {e.joint for e in weak.failures()} == {"neck_pitch"}
     with pytest.raises(torque_path.TorquePathError, match=r"neck_pitch\[0\] set_screw \(3\.336 of 3\.234 N m\)"):
         torque_path.enforce(weak)
 

@@ -23,3 +23,19 @@ def test_an_unlisted_error_passes_through_unchanged():
             raise KeyError("neck_roll")
     assert type(caught.value) is KeyError
 
+
+
+def test_a_torque_path_too_weak_stops_the_build_with_its_table(tmp_path):
+    """fab.py enforces the torque paths as it does the other checks: a yaw stage on MXL stock (its belt 0.085 of the
+    0.373 N m peak) is the TorquePathError's message, table and all."""
+    from robogene_head import torque_path
+    from param_variants import edited
+
+    def mxl(data):
+        data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8)
+    report = torque_path.analyse(edited(tmp_path, mxl))
+    with pytest.raises(fab.BuildError, match=r"^torque path elements below the required margin 1\.5: neck_yaw\[3\] "
+                                             r"belt") as caught:
+        with fab._fails_build(torque_path.TorquePathError):
+            torque_path.enforce(report)
+    assert torque_path.format_table(report) in str(caught.value)

@@ -63,16 +63,20 @@ def _size(part) -> tuple[float, float, float]:
     ("geometry.covers.back_depth", 20, covers, "head_back_cover", lambda p: _size(p)[0], 20),
     ("geometry.motor_mounts.neck_pitch.outline", [-22, 22, -18, 18], neck, "neck_pitch_motor_mount",
      lambda p: _size(p)[0], 44),
-    ("geometry.motor_mounts.neck_yaw.thickness", 4, head_frame, "neck_yaw_motor_mount", lambda p: _size(p)[2], 4),
+    ("geometry.yaw_jackshaft.housing.flange_half", 23, head_frame, "neck_yaw_jackshaft_housing",
+     lambda p: _size(p)[2], 46),
     ("geometry.tilt_jackshaft.housing.front", 24, head_frame, "eyes_tilt_jackshaft_housing", lambda p: _size(p)[0], 35),
-    ("geometry.motor_mounts.neck_yaw.fixings", [[-11, -10], [-11, 10], [11, -10], [11, 10]], head_frame,
-     "yaw_mount_screw_0", lambda p: p.placement.toTuple()[0][0], -30 - 11),
+    ("geometry.yaw_jackshaft.axis", [-16, -42], head_frame, "neck_yaw_jackshaft",
+     lambda p: p.shape.BoundingBox().center.x, -16),
+    ("geometry.yaw_jackshaft.fixings", [[8, -18], [8, 18]], head_frame, "yaw_housing_screw_1",
+     lambda p: math.dist(p.shape.Center().toTuple()[:2], (-15, -42)),
+     math.hypot(8, 18)),
     ("geometry.head.joins.side_floor_x", [-38, 20], head_frame, "side_floor_screw_left_0",
      lambda p: p.placement.toTuple()[0][0], -38),
     ("geometry.gearhead_flange.bolt_circle_ratio", 0.6, neck, "neck_pitch_gearhead_screw_0",
      lambda p: math.hypot(p.placement.toTuple()[0][0], p.placement.toTuple()[0][2] - 48), 0.3 * 32),  # 32/3: 32 across
-    ("geometry.pulleys.flange.rim", 2, head_frame, "neck_yaw_motor_pulley",
-     lambda p: _size(p)[0], 14 * 2.032 / math.pi - 0.508 + 4),
+    ("geometry.pulleys.yaw.rim", 2, head_frame, "neck_yaw_motor_pulley",
+     lambda p: _size(p)[0], 14 * 5.08 / math.pi - 0.508 + 4),
 ])
 def test_a_changed_dimension_reaches_the_solids(raw, tmp_path, params, path, value, family, part, measure, expected):
     before = measure(_parts(params, family)[part])
@@ -96,8 +100,10 @@ def test_wider_mount_holes_take_material_from_the_flange(raw, tmp_path, params):
      r"geometry\.motor_mounts\.neck_pitch\.outline: expected x0 < 0 < x1"),
     ("geometry.motor_mounts.neck_roll.fixings", [[-14.5, -6, 1]],
      r"geometry\.motor_mounts\.neck_roll\.fixings\[0\]: expected a list of 2 numbers"),
-    ("geometry.motor_mounts.pilot_hole", 6, r"geometry\.motor_mounts\.pilot_hole: 6 is too small for the yaw motor "
-                                            r"pulley's hub, which needs 6\.8"),
+    ("geometry.yaw_jackshaft.housing.flange_back", 14, r"geometry\.yaw_jackshaft\.housing\.flange_back: 14 reaches "
+                                                      r"behind the body's back"),
+    ("geometry.yaw_jackshaft.axis", [0, 0], r"geometry\.yaw_jackshaft\.axis: lies on the yaw axis"),
+    ("geometry.yaw_jackshaft.axis", [-15, -70], r"geometry\.yaw_jackshaft\.axis: \(-15, -70\) is not on the head floor"),
     ("geometry.clearance_holes.M3", 2.9, r"geometry\.clearance_holes\.M3: 2\.9 does not clear an M3"),
     ("geometry.clearance_holes.M2", None, r"geometry\.clearance_holes\.M2: missing"),
     ("geometry.gearhead_flange.bolt_circle_ratio", 1.2, r"geometry\.gearhead_flange\.bolt_circle_ratio: must be <= 1"),

@@ -5,7 +5,7 @@ bearing_arrangement.py, jackshafts.py): the belt's pull at the drive's peak torq
 628/6 with the pulley overhanging the fixed one, each row against C0; one fixed bearing (both rings held both ways: the
 collar and the spacer sleeve, the land and the side plate) and one floating (its outer ring with room to slide, its
 inner ring against the collar), failing on the old design and on broken variants; a jackshaft is found from the parts'
-data, so a second one in the same shape is picked up with no new code."""
+data, so the yaw's, the same stage turned to point down through the head floor, is picked up with no new code."""
 import math
 
 import numpy as np
@@ -26,34 +26,37 @@ def parts(params):
     return head_frame.build(params)
 
 
-def _centre_y(part):
+def _centre(part, axis):
     lo, hi = exact_bounds(part.shape)
-    return (lo[1] + hi[1]) / 2
+    return (lo[axis] + hi[axis]) / 2
 
 
-def test_the_belt_pull_is_shared_by_statics(params, parts):
-    """Pull = (1 + 2 x 0.3) x T / r: 0.261 N m on the 14T XL pulley's 11.32 mm pitch radius; the belt's plane is the
-    belt envelope's middle, the bearings' places their envelopes' middles (the CAD, not the check's frames)."""
-    loads, problems, [pull] = bearing_loads.jackshaft_loads(params, parts)
-    assert problems == []
+@pytest.mark.parametrize("joint, axis", [("eyes_tilt", 1), ("neck_yaw", 2)])
+def test_the_belt_pull_is_shared_by_statics(params, parts, joint, axis):
+    """Pull = (1 + 2 x 0.3) x T / r: the peak torque (0.261 N m on the tilt, 0.373 on the yaw) on the 14T XL pulley's
+    11.32 mm pitch radius; the belt's plane is the belt envelope's middle, the bearings' places their envelopes'
+    middles along the jackshaft's axis (the tilt's along y, the yaw's along z: the CAD, not the check's frames)."""
+    loads, problems, pulls = bearing_loads.jackshaft_loads(params, parts)
+    assert problems == [] and len(pulls) == 2
+    [pull] = [p for p in pulls if p.shaft == f"{joint}_jackshaft"]
     by_name = {p.name: p for p in parts}
-    torque = torque_path.peak(params, "eyes_tilt").at_gearhead
+    torque = torque_path.peak(params, joint).at_gearhead
     force = 1.6 * torque / (14 * 5.08 / math.pi / 2 * 1e-3)
     assert pull.pull_N == pytest.approx(force, rel=1e-9)
-    belt = _centre_y(by_name["eyes_tilt_belt"])
-    fixed, floating = (_centre_y(by_name[f"eyes_tilt_jackshaft_bearing_{n}"]) for n in ("fixed", "floating"))
+    belt = _centre(by_name[f"{joint}_belt"], axis)
+    fixed, floating = (_centre(by_name[f"{joint}_jackshaft_bearing_{n}"], axis) for n in ("fixed", "floating"))
     # moments about the floating bearing: the fixed one carries the pull times its lever over the bearings' span
-    expect = {"eyes_tilt_jackshaft_bearing_fixed": force * (belt - floating) / (fixed - floating),
-              "eyes_tilt_jackshaft_bearing_floating": force * (belt - fixed) / (fixed - floating)}
-    rows = {b.bearing: b for b in loads}
+    expect = {f"{joint}_jackshaft_bearing_fixed": force * (belt - floating) / (fixed - floating),
+              f"{joint}_jackshaft_bearing_floating": force * (belt - fixed) / (fixed - floating)}
+    rows = {b.bearing: b for b in loads if b.bearing.startswith(joint)}
     assert set(rows) == set(expect)
     for name, radial in expect.items():
         assert rows[name].radial_N == pytest.approx(radial, rel=1e-6)
         assert rows[name].axial_N == 0 and rows[name].p0_N == rows[name].radial_N
         assert rows[name].safety == pytest.approx(350 / radial, rel=1e-6)
     # the pulley overhangs the fixed bearing: it carries the whole pull and what the floating one pulls the other way
-    assert rows["eyes_tilt_jackshaft_bearing_fixed"].radial_N == pytest.approx(
-        force + rows["eyes_tilt_jackshaft_bearing_floating"].radial_N, rel=1e-9)
+    assert rows[f"{joint}_jackshaft_bearing_fixed"].radial_N == pytest.approx(
+        force + rows[f"{joint}_jackshaft_bearing_floating"].radial_N, rel=1e-9)
     assert all(b.safety >= bearing_loads.required_safety(params) for b in loads)
 
 
@@ -67,34 +70,21 @@ def test_a_weaker_bearing_fails_the_check(tmp_path, parts):
         bearing_loads.enforce(report)
 
 
-def _copied_stage(params, parts, dx):
-    """The tilt's jackshaft stage again, `dx` along x, its gearhead renamed as the yaw's (the finder names the driving
-    joint by its gearhead on the shaft's axis); the real yaw gearhead left out."""
-    names = {"eyes_tilt_jackshaft_housing", "eyes_tilt_jackshaft", "eyes_tilt_jackshaft_bearing_fixed",
-             "eyes_tilt_jackshaft_spacer", "eyes_tilt_coupling_screw_0", "eyes_tilt_coupling_screw_1",
-             "eyes_tilt_jackshaft_bearing_floating", "eyes_tilt_coupling", "eyes_tilt_motor_pulley",
-             "eyes_tilt_motor_pulley_set_screw_0", "eyes_tilt_motor_pulley_set_screw_1", "eyes_tilt_gearhead"}
-    copies = []
-    for p in parts:
-        if p.name in names:
-            name = "neck_yaw_gearhead" if p.name == "eyes_tilt_gearhead" else "copy_" + p.name
-            copies.append(Part(name, p.design, p.link, p.kind, p.local, loc(dx) * p.placement, material=p.material,
-                               mass=p.mass, turning=p.turning))
-    # the side plate with the stage's passage and fixings there too
-    plate = next(p for p in parts if p.name == "head_side_plate_left")
-    holed = Part(plate.name, plate.design, plate.link, plate.kind,
-                 geom.cut(plate.shape, *[t.moved(loc(dx)) for t in tilt_jackshaft.side_plate_tools(params)]),
-                 material=plate.material)
-    return [holed if p.name == plate.name else p for p in parts if p.name != "neck_yaw_gearhead"] + copies
-
-
-def test_a_second_jackshaft_is_picked_up(params, parts):
-    found = jackshafts.find(params, _copied_stage(params, parts, 60.0))
+def test_the_yaw_jackshaft_is_picked_up(params, parts):
+    """The yaw's stage, drawn by the same module and pointing down through the floor, is found with no new code:
+    driven by the yaw's gearhead on its axis, its pulley the one that turns with it, its bearings along its axis
+    from the gearhead's end (the floating one above the fixed one)."""
+    found = jackshafts.find(params, parts)
     assert [(j.shaft, j.joint, j.pulley) for j in found] == [
-        ("eyes_tilt_jackshaft", "eyes_tilt", "eyes_tilt_motor_pulley"),
-        ("copy_eyes_tilt_jackshaft", "neck_yaw", "copy_eyes_tilt_motor_pulley")]
-    assert found[1].bearings == ["copy_eyes_tilt_jackshaft_bearing_floating", "copy_eyes_tilt_jackshaft_bearing_fixed"]
-    assert np.allclose(found[1].origin - found[0].origin, [60, 0, 0])
+        ("neck_yaw_jackshaft", "neck_yaw", "neck_yaw_motor_pulley"),
+        ("eyes_tilt_jackshaft", "eyes_tilt", "eyes_tilt_motor_pulley")]
+    yaw = found[0]
+    assert np.allclose(np.abs(yaw.axis), [0, 0, 1])
+    # in the link frame, which is the world's turned by nothing at the zero pose: along the axis from the gearhead
+    by_name = {p.name: p for p in parts}
+    places = [yaw.along(np.array(by_name[b].shape.Center().toTuple())) for b in yaw.bearings]
+    assert yaw.bearings == ["neck_yaw_jackshaft_bearing_floating", "neck_yaw_jackshaft_bearing_fixed"]
+    assert places == sorted(places)
 
 
 def _shaft_result(report, name="eyes_tilt_jackshaft"):
@@ -150,12 +140,17 @@ def test_a_floating_outer_ring_also_held_fails(params, parts):
                        "besides the fixed bearing: it must float")
 
 
-def test_a_second_jackshaft_is_checked_too(params, parts):
-    report = arrangement.analyse(params, _copied_stage(params, parts, 60.0))
+def test_the_yaw_jackshaft_is_checked_too(params, parts):
+    """Its fixed bearing at the floor: inner ring between the collar and the spacer sleeve, outer ring between the
+    housing's land and the floor's top face; the floating one above it with its float room."""
+    report = arrangement.analyse(params, parts)
     assert report.ok, arrangement.format_report(report)
     assert [(j.joint, j.fixed) for j in report.joints][-2:] == [
-        ("eyes_tilt_jackshaft", "eyes_tilt_jackshaft_bearing_fixed"),
-        ("copy_eyes_tilt_jackshaft", "copy_eyes_tilt_jackshaft_bearing_fixed")]
+        ("neck_yaw_jackshaft", "neck_yaw_jackshaft_bearing_fixed"),
+        ("eyes_tilt_jackshaft", "eyes_tilt_jackshaft_bearing_fixed")]
+    fixed = {b.bearing: b for b in _shaft_result(report, "neck_yaw_jackshaft").bearings}["neck_yaw_jackshaft_bearing_fixed"]
+    assert {fixed.inner.minus.stop, fixed.inner.plus.stop} == {"neck_yaw_jackshaft", "neck_yaw_jackshaft_spacer"}
+    assert {fixed.outer.minus.stop, fixed.outer.plus.stop} == {"neck_yaw_jackshaft_housing", "head_floor"}
 
 
 def test_a_float_room_that_eats_the_land_is_refused(tmp_path):

@@ -107,9 +107,10 @@ M2 = {"kind": "set_screw", "diameter": 2, "length": 3, "holding_force_N": 289, "
 
 
 def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(params, tmp_path):
-    """Yaw: 2 x 712 N at the Ø15 shaft's radius is 10.7 N m against the drive's 2.09 N m peak there; one M2 set
-    screw (2.2 N m) is below the 1.5 margin, a plain bore carries nothing. Tilt: 4.3 N m against 0.45 N m (the
-    24/14 XL stage); a plain bore fails, while one M2 (0.87 N m, margin 1.94) would now pass."""
+    """Yaw: 2 x 712 N at the Ø15 shaft's radius is 10.7 N m against the drive's 0.533 N m peak there (its 550 mA
+    limit through the 20/14 XL stage); a plain bore fails, while one M2 (2.2 N m, margin 4.1) would now pass. Tilt:
+    4.3 N m against 0.45 N m (the 24/14 XL stage); a plain bore fails, while one M2 (0.87 N m, margin 1.94) would
+    now pass."""
     report = torque_path.analyse(params)
     for joint in JOINTS:
         (hub,) = [e for e in report.elements if e.joint == joint and e.at == "joint"]
@@ -119,7 +120,7 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
 
     one_m2 = lambda e: e.update(count=1, screw="iso4029-M2x3")   # noqa: E731
     plain = lambda e: (e.update(element="plain", length=8), e.pop("count"), e.pop("screw"))   # noqa: E731
-    for joint, weakenings in (("neck_yaw", (one_m2, plain)), ("eyes_tilt", (plain,))):
+    for joint, weakenings in (("neck_yaw", (plain,)), ("eyes_tilt", (plain,))):
         index = [e["at"] for e in params.root.raw("torque_paths")[joint]].index("joint")
         for weaken in weakenings:
             def edit(data, joint=joint, weaken=weaken):
@@ -137,6 +138,13 @@ def test_the_joint_pulleys_pass_where_a_plain_bore_or_one_small_screw_fails(para
     (hub,) = [e for e in torque_path.analyse(edited(tmp_path, tilt_one_m2)).elements
               if e.joint == "eyes_tilt" and e.at == "joint"]
     assert hub.margin == pytest.approx(289 * 3 / 1000 / (0.261 * 24 / 14), rel=0.01)
+
+    def yaw_one_m2(data):
+        data["purchased"]["iso4029-M2x3"] = M2
+        one_m2(next(e for e in data["torque_paths"]["neck_yaw"] if e["at"] == "joint"))
+    (hub,) = [e for e in torque_path.analyse(edited(tmp_path, yaw_one_m2)).elements
+              if e.joint == "neck_yaw" and e.at == "joint"]
+    assert hub.margin == pytest.approx(289 * 7.5 / 1000 / (0.373 * 20 / 14), rel=0.01)
 
 
 @pytest.mark.parametrize("edit, message", [
@@ -191,6 +199,7 @@ def test_the_yaw_set_screws_are_reached_where_drawn_and_not_behind_the_roll_driv
 
 def test_a_yaw_hub_longer_than_the_room_above_the_roll_stage_is_named(tmp_path):
     def long_hub(data):
-        data["geometry"]["pulleys"]["joint_hub"]["length"] = 6
-    with pytest.raises(ParameterError, match=r"geometry\.pulleys\.joint_hub\.length: 6 reaches into the roll stage"):
+        data["geometry"]["pulleys"]["joint_hub"]["length"] = 7
+    with pytest.raises(ParameterError, match=r"geometry\.pulleys\.joint_hub\.length: 7 reaches into the roll stage: "
+                                             r"the yaw joint pulley stands 6\.7 above it"):
         neck.build(edited(tmp_path, long_hub))

@@ -13,16 +13,13 @@ from robogene_head.geom import distance
 from robogene_head.parts import head_frame, tilt_jackshaft
 from robogene_head.parts.base import loc
 
+import jackshaft_stage
 from param_variants import edited
 
 
 @pytest.fixture(scope="module")
 def parts(params):
     return {p.name: p for p in head_frame.build(params)}
-
-
-def _paths(params):
-    return [e for e in params.root.node("torque_paths").raw("eyes_tilt")]
 
 
 def _span_y(part):
@@ -32,46 +29,7 @@ def _span_y(part):
 
 def mismatches(params, parts) -> list[str]:
     """Where torque_paths.eyes_tilt and the CAD disagree (empty: they agree)."""
-    out = []
-    path = _paths(params)
-    kinds = [e["element"] for e in path]
-    if kinds != ["clamp", "clamp", "set_screw", "belt", "set_screw"]:
-        return [f"elements {kinds}"]
-    n = tilt_jackshaft.node(params)
-    coupling = params.purchased(n.text("coupling"))
-    screw_key = coupling.text("screw")
-    screw = params.purchased(screw_key)
-    gear = params.purchased(params.drive("eyes_tilt").text("gearhead"))
-    shaft = n.node("shaft").num("diameter")
-    jack = parts["eyes_tilt_jackshaft"].shape.BoundingBox()
-    gear_shaft_end = _span_y(parts["eyes_tilt_gearhead"])[1]
-    lay = tilt_jackshaft.layout(params)
-    screws = [parts[f"eyes_tilt_coupling_screw_{i}"] for i in range(2)]
-    # each clamp element: its shaft is the bore of the half whose screw sits over that shaft, one screw per half
-    for element, bore, over in ((path[0], coupling.vec("bores", 2)[0], (lay.gearhead_face, gear_shaft_end)),
-                                (path[1], coupling.vec("bores", 2)[1], (jack.ymin, jack.ymax))):
-        d = gear.num("shaft_diameter") if element["shaft"] == "gearhead" else element["shaft"]
-        if d != bore:
-            out.append(f"clamp on {d:g} mm, the coupling's bore is {bore:g}")
-        held = [s for s in screws if over[0] <= _span_y(s)[0] and _span_y(s)[1] <= over[1]]
-        if element["count"] != len(held):
-            out.append(f"clamp of {element['count']} screws, {len(held)} drawn over its shaft")
-        if element["screw_diameter"] != screw.num("diameter") or element["strength_class"] != screw.text("strength_class"):
-            out.append(f"clamp screw M{element['screw_diameter']:g} {element['strength_class']}, drawn {screw_key}")
-    # the motor pulley's set screws on the jackshaft, each reaching its flat
-    hub = tilt_jackshaft.mounts.motor_hub(params, "eyes_tilt")
-    drawn = [p for name, p in parts.items() if name.startswith("eyes_tilt_motor_pulley_set_screw_")]
-    if path[2]["shaft"] != shaft or path[2]["count"] != len(drawn) or path[2]["screw"] != hub.text("set_screw"):
-        out.append(f"pulley set screws {path[2]}, drawn {len(drawn)} x {hub.text('set_screw')} on {shaft:g}")
-    fit = params.geometry("clearances").num("fit_tolerance")
-    if any(distance(s.shape, parts["eyes_tilt_jackshaft"].shape) > fit for s in drawn):
-        out.append("a set screw does not reach the jackshaft")
-    # the belt stage's stock is the one its pulleys are drawn for
-    stage = params.geometry("pulleys", "tilt")
-    profile = params.purchased(stage.text("belt")).text("profile")
-    if not parts["eyes_tilt_motor_pulley"].design.startswith(profile.lower() + "-pulley-14T"):
-        out.append(f"the motor pulley {parts['eyes_tilt_motor_pulley'].design} is not a 14T {profile} pulley")
-    return out
+    return jackshaft_stage.mismatches(params, parts, tilt_jackshaft.stage(params))
 
 
 def test_the_torque_path_is_what_the_cad_draws(params, parts):

@@ -112,12 +112,9 @@ def _pitch_diameter(stage: Node, teeth: int) -> float:
 
 
 def _belt_centre(params: HeadParameters, joint: str) -> float:
-    """The belt stage's centre distance, as the CAD places the motor (parts/mounts.belts)."""
-    head = params.geometry("head")
-    if joint == "neck_yaw":
-        return abs(head.num("yaw_motor_x"))
-    tilt, tm = params.joints["eyes_tilt"].origin, head.node("tilt_motor")
-    return math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z"))
+    """The belt stage's centre distance, as the CAD places the motor pulley (parts/mounts.belt_centre)."""
+    from .parts import mounts
+    return mounts.belt_centre(params, joint)
 
 
 def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:

@@ -75,15 +75,3 @@ def screws(params: HeadParameters, name: str, link: str, flange_frame: cq.Locati
                              f"which take 2 to {thread_depth:g} mm")
     return [purchased.screw(params, f"{name}_gearhead_screw_{k}", key, link, flange_frame * loc(x, y, seat))
             for k, (x, y) in enumerate(purchased.gearhead_bolt_circle(params, gearhead_diameter))]
-
-
-def head_pockets(params: HeadParameters, gearhead_diameter: float, slot: float = 0.0) -> list[cq.Shape]:
-    """Pockets for the heads of screws under a plate without counterbores, in the flange frame (z < 0), as slots
-    `slot` long along x when the plate slides."""
-    d, depth = counterbore(params)
-    out = []
-    for x, y in purchased.gearhead_bolt_circle(params, gearhead_diameter):
-        out += [geom.cyl("z", d, -depth, 1, (x - slot / 2, y)), geom.cyl("z", d, -depth, 1, (x + slot / 2, y))]
-        if slot > 0:
-            out.append(geom.box(x - slot / 2, x + slot / 2, y - d / 2, y + d / 2, -depth, 1))
-    return out

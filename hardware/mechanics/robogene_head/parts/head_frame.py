@@ -7,13 +7,12 @@ import math
 
 import cadquery as cq
 
-from robogene_head_model.params import HeadParameters, Node, ParameterError
+from robogene_head_model.params import HeadParameters
 
 from .. import geom
-from . import (gearhead_screws, head_joins, joint_encoders, mounts, neck, purchased, tilt_bearings, tilt_jackshaft,
-               tilt_stops, yaw_bearings)
+from . import (head_joins, joint_encoders, mounts, neck, purchased, tilt_bearings, tilt_jackshaft, tilt_stops,
+               yaw_bearings, yaw_jackshaft)
 from .base import ALUMINIUM, DARK, Part, loc
-YAW_GEARHEAD_SCREW = "iso4762-M2x6"
 
 
 def build(params: HeadParameters) -> list[Part]:
@@ -25,22 +24,15 @@ def build(params: HeadParameters) -> list[Part]:
     inner = hw - st
     tilt = params.joints["eyes_tilt"].origin
     tx, tz = tilt[0], tilt[2]
-    ym = h.num("yaw_motor_x")
     tilt_bearing = params.purchased(params.drive("eyes_tilt").text("bearing"))
     al = dict(material="aluminium-6082", color=ALUMINIUM)
     joins = head_joins.build(params)
 
-    yaw_gear = params.purchased(params.drive("neck_yaw").text("gearhead"))
-    yaw_fixings, yaw_slot = mounts.mount_fixings(params, "neck_yaw"), mounts.mount_slot(params, "neck_yaw")
-    yaw_plate = mounts.mount_thickness(params, "neck_yaw")
     m3 = params.purchased(mounts.FIXING_SCREW).num("diameter")   # tapped holes are drawn at the thread
-    # the yaw bearings' boss stands on the floor (yaw_bearings)
+    # the yaw bearings' boss stands on the floor (yaw_bearings); the yaw jackshaft's housing on its top face, the
+    # jackshaft through it and the housing's fixings in slots along the belt (yaw_jackshaft)
     floor = geom.cut(geom.union(geom.box(x0, x1, -hw, hw, -ft, 0), yaw_bearings.boss(params)),
-                     *yaw_bearings.housing_tools(params),
-                     *_yaw_hub_slot(params, yaw_gear.num("shaft_diameter"), ym, -ft - 1, 1), *joins.holes["head_floor"],
-                     *[geom.cyl("z", m3, -ft - 1, 1, (ym + fx, fy)) for fx, fy in yaw_fixings],
-                     *[t.moved(loc(ym, 0, 0)) for t in gearhead_screws.head_pockets(params, yaw_gear.num("diameter"),
-                                                                                    yaw_slot)],
+                     *yaw_bearings.housing_tools(params), *yaw_jackshaft.floor_tools(params), *joins.holes["head_floor"],
                      *joint_encoders.face_holes(params, joint_encoders.ends(params)["neck_yaw"]))   # the yaw encoder's bracket
     # Left side plate in its design frame; the right plate is its mirror image.
     face_z = h.vec("face_screw_z", 2)
@@ -80,44 +72,12 @@ def build(params: HeadParameters) -> list[Part]:
                           loc(tx, inner, tz, rx=-90)),
         *[p for p in tilt_bearings.right_parts(params) if p.link == "head_frame"],
     ]
-    # Yaw drive: gearhead flange on a mount plate on the floor, output shaft down to the motor pulley.
-    # Four M3 through slots into the floor: the plate slides along x to tension the belt.
-    parts.append(Part("neck_yaw_motor_mount", "motor_mount_neck_yaw", "head_frame", "machined",
-                      mounts.mount_plate(params, "neck_yaw", mounts.mount_outline(params, "neck_yaw"),
-                                         yaw_gear.num("diameter"), counterbores=False),
-                      loc(ym, 0, 0), note=mounts.mount_note(params, "neck_yaw"), **al))
-    for i, (fx, fy) in enumerate(yaw_fixings):
-        parts.append(purchased.screw(params, f"yaw_mount_screw_{i}", mounts.FIXING_SCREW, "head_frame",
-                                     loc(ym + fx, fy, yaw_plate, rx=180)))
-    parts += purchased.drive_stack(params, "neck_yaw", "head_frame", loc(ym, 0, yaw_plate))
-    # The thin plate has no room for counterbores: the screw heads sit under it, in slotted pockets in the floor.
-    parts += gearhead_screws.screws(params, "neck_yaw", "head_frame", loc(ym, 0, 0), yaw_gear.num("diameter"),
-                                    yaw_plate, key=YAW_GEARHEAD_SCREW, counterbored=False)
-    # The motor pulleys' hubs reach back along the gearhead shafts, through the floor and the mount plate here.
-    width = mounts.pulley_width(params, "neck_yaw")
-    drop = neck.yaw_pulley_drop(params)
-    yaw_teeth, yaw_bore = int(params.geometry("pulleys", "yaw").num("motor_teeth", positive=True)), yaw_gear.num("shaft_diameter")
-    parts.append(Part("neck_yaw_motor_pulley", f"pulley_mxl_{yaw_teeth}T_bore{yaw_bore:g}", "head_frame", "machined",
-                      mounts.pulley(params, "neck_yaw", yaw_teeth, yaw_bore,
-                                    mounts.hub_length(params, drop - width + yaw_plate)),
-                      loc(ym, 0, -drop), note=mounts.pulley_note(params, "neck_yaw", yaw_teeth, yaw_bore, hub=True), **al))
+    # Yaw drive: clamped in the jackshaft's housing on the floor, the motor pulley on the jackshaft under it
+    parts += yaw_jackshaft.build(params)
     # Tilt drive: clamped in the jackshaft's housing on the inside of the left side plate, the motor pulley on the
     # jackshaft outside it (tilt_jackshaft)
     parts += tilt_jackshaft.build(params)
     return parts + belt_parts(params) + joins.screws + stop_pins
-
-
-def _yaw_hub_slot(params: HeadParameters, bore: float, ym: float, z0: float, z1: float) -> list[cq.Shape]:
-    """The floor's passage for the yaw motor pulley's hub: a slot along x, as far as the mount plate slides."""
-    d, slot = mounts.hub_hole(params, bore), mounts.mount_slot(params, "neck_yaw")
-    pilot = params.geometry("motor_mounts").num("pilot_hole", positive=True)
-    if d > pilot:
-        raise ParameterError(f"{params.path}: geometry.motor_mounts.pilot_hole: {pilot:g} is too small for the yaw "
-                             f"motor pulley's hub, which needs {d:g}")
-    tools = [geom.cyl("z", d, z0, z1, (ym - slot / 2, 0))]
-    if slot > 0:
-        tools += [geom.cyl("z", d, z0, z1, (ym + slot / 2, 0)), geom.box(ym - slot / 2, ym + slot / 2, -d / 2, d / 2, z0, z1)]
-    return tools
 
 
 def belt_parts(params: HeadParameters) -> list[Part]:
@@ -127,12 +87,13 @@ def belt_parts(params: HeadParameters) -> list[Part]:
     hw = h.node("floor").num("half_width")
     belts = {joint: (key, teeth) for key, joint, teeth in mounts.belts(params)}
     yaw, tilt = params.geometry("pulleys", "yaw"), params.geometry("pulleys", "tilt")
-    ym = h.num("yaw_motor_x")
+    yx, yy = yaw_jackshaft.axis(params)
     tx, _, tz = params.joints["eyes_tilt"].origin
     tmx, tmz = h.node("tilt_motor").num("x"), h.node("tilt_motor").num("z")
     # pulley frames: the yaw pulleys' z 0..width from the drop below the floor, the tilt pulleys' along +y from
     # 1 mm outside the left side plate; the loop's x axis points from the joint pulley to the motor pulley
-    loops = [("neck_yaw", abs(ym), yaw, loc(0, 0, -neck.yaw_pulley_drop(params), rz=0 if ym > 0 else 180)),
+    loops = [("neck_yaw", yaw_jackshaft.centre_distance(params), yaw,
+              loc(0, 0, -neck.yaw_pulley_drop(params), rz=math.degrees(math.atan2(yy, yx)))),
              ("eyes_tilt", math.hypot(tmx - tx, tmz - tz), tilt,
               loc(tx, hw + mounts.plate_gap(params), tz, ry=math.degrees(math.atan2(-(tmz - tz), tmx - tx)), rx=-90))]
     out = []

@@ -14,7 +14,7 @@ import cadquery as cq
 from robogene_head_model.params import HeadParameters, Node
 
 from .. import geom
-from . import gearhead_screws, mounts, purchased
+from . import mounts, purchased
 from .base import Part, loc
 
 M3, M2 = "iso7380-M3x12", "iso4762-M2x10"
@@ -33,12 +33,9 @@ def notes(params: HeadParameters) -> dict[str, str]:
     """Drawing notes: what the drawn holes of each part are."""
     c3, c2 = mounts.clearance_hole(params, M3), mounts.clearance_hole(params, M2)
     depth = tap_depth(params)
-    pocket, pocket_depth = gearhead_screws.counterbore(params)
-    slot = mounts.mount_slot(params, "neck_yaw")
     return {
-        "head_floor": f"{c3:g} / {c2:g}: clearance for the side and back plates' M3 / M2; 4 x M3 tapped through (tap "
-                      f"drill 2.5), drawn at 3.0, for the yaw motor mount; {pocket:g} x {pocket + slot:g} slots "
-                      f"{pocket_depth:g} deep for its gearhead screws' heads",
+        "head_floor": f"{c3:g} / {c2:g}: clearance for the side and back plates' M3 / M2; {c3:g} slots for the yaw "
+                      f"jackshaft housing's M3 and the jackshaft's passage, along the belt (belt tension)",
         "head_side_plate": f"M3 tapped {depth:g} deep (tap drill 2.5) in front and bottom edges, drawn at 3.0; {c2:g} "
                            f"through for M2; left plate: {c3:g} slots for the tilt jackshaft housing's M3 and the "
                            f"jackshaft's passage, along x (belt tension)",

@@ -141,6 +141,11 @@ def housing(params: HeadParameters, stage: Stage) -> cq.Solid:
     n, lay = node(params, stage), layout(params, stage)
     h = n.node("housing")
     half, front, fh = h.num("half", positive=True), h.num("front", positive=True), h.num("flange_half", positive=True)
+    # how far the flange reaches behind the axis: up to the body's back (the tilt's) or less, where something
+    # stands behind the housing (the yaw's, flanged ahead of the axis only)
+    back = h.num("flange_back", minimum=0)
+    if back > half:
+        raise h._fail("flange_back", f"{back:g} reaches behind the body's back ({half:g} behind the axis)")
     clamp, lug, split = h.num("clamp", positive=True), h.num("lug", positive=True), h.num("split", positive=True)
     gear = params.purchased(params.drive(stage.joint).text("gearhead"))
     bearing = params.purchased(bearing_key(params, stage))
@@ -153,7 +158,7 @@ def housing(params: HeadParameters, stage: Stage) -> cq.Solid:
     y0 = lay.gearhead_face - clamp
     x, z = lay.x, lay.z
     body = geom.union(geom.box(x - half, x + half, y0, lay.inner, z - half, z + half),
-                      geom.box(x - half, x + front, lay.inner - h.num("flange", positive=True), lay.inner, z - fh, z + fh),
+                      geom.box(x - back, x + front, lay.inner - h.num("flange", positive=True), lay.inner, z - fh, z + fh),
                       geom.box(x, x + lug, y0, lay.gearhead_face, z - half, z + half))
     c0, c1 = lay.coupling
     land0, land1 = lay.land

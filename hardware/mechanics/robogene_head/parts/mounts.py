@@ -135,18 +135,15 @@ def pitch_diameter(params: HeadParameters, joint: str, teeth: int) -> float:
     return teeth * belt_pitch(params, joint) / math.pi
 
 
-def pulley(params: HeadParameters, joint: str, teeth: int, bore: float, hub_length: float = 0.0) -> cq.Shape:
-    """Pulley envelope of the joint's stage, z 0..width: toothed body at its outside diameter between two flanges.
-    A motor pulley has a hub hub_length long from z = width, around the bore, so that it sits on most of its
-    gearhead's shaft."""
+def pulley(params: HeadParameters, joint: str, teeth: int, bore: float) -> cq.Shape:
+    """Pulley envelope of the joint's stage, z 0..width: toothed body at its outside diameter between two flanges
+    (a set-screw pulley's hub is joint_pulley's)."""
     width = pulley_width(params, joint)
     outside = pitch_diameter(params, joint, teeth) - pitch_differential(params)
     flange, f = outside + 2 * rim(params, joint), flange_thickness(params)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
-    if hub_length > 0:
-        body = geom.union(body, geom.cyl("z", hub_diameter(params, bore), width, width + hub_length))
-    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + hub_length + 1)), f"pulley_{teeth}T")
+    return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + 1)), f"pulley_{teeth}T")
 
 
 def joint_hub(params: HeadParameters) -> Node:
@@ -229,8 +226,13 @@ def set_screw_frames(params: HeadParameters, joint: str, bore: float, outboard: 
 
 def shaft_flats(params: HeadParameters, joint: str, bore: float, outboard: bool,
                 hub: Node | None = None) -> list[cq.Shape]:
-    """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub."""
+    """Tools, in the pulley's frame, that cut the flats the set screws bear on into the shaft, along the hub and on
+    past its free end by clearances.minimum: the hub's end face then does not stand on the flat's end (the two
+    edges on one circle leave the link's fused mesh non-manifold where the yaw pulley's hub stands free of the roll
+    stage)."""
     z0, z1 = joint_hub_span(params, joint, outboard, hub)
+    run_out = params.geometry("clearances").num("minimum", positive=True)
+    z0, z1 = (z0, z1 + run_out) if outboard else (z0 - run_out, z1)
     inner = bore / 2 - flat_depth(params, bore, hub)
     return [geom.box(inner, bore, -bore, bore, z0, z1).moved(cq.Location(cq.Vector(), cq.Vector(0, 0, 1), angle))
             for angle in set_screw_angles(params, joint, hub)]
@@ -259,24 +261,6 @@ def joint_pulley(params: HeadParameters, joint: str, teeth: int, bore: float, ou
     return geom.single_solid(geom.cut(body, *holes), f"joint pulley {joint}")
 
 
-def hub_diameter(params: HeadParameters, bore: float) -> float:
-    return bore + 2 * params.geometry("pulleys", "hub").num("wall", positive=True)
-
-
-def hub_hole(params: HeadParameters, bore: float) -> float:
-    """Diameter of a hole a motor pulley's hub passes through."""
-    return hub_diameter(params, bore) + 2 * params.geometry("pulleys", "hub").num("clearance", positive=True)
-
-
-def hub_length(params: HeadParameters, from_pulley_to_flange: float) -> float:
-    """Hub length for a pulley whose body ends this far from its gearhead's flange face: up to the hub gap."""
-    gap = params.geometry("pulleys", "hub").num("gap", positive=True)
-    if from_pulley_to_flange <= gap:
-        raise ParameterError(f"{params.path}: geometry.pulleys.hub.gap: {gap:g} leaves no hub: the pulley ends "
-                             f"{from_pulley_to_flange:g} mm from its gearhead's flange")
-    return from_pulley_to_flange - gap
-
-
 def belt_teeth(params: HeadParameters, joint: str, centre_distance: float, teeth_a: int, teeth_b: int) -> int:
     """Closed belt for the joint's two pulleys: pitch length 2C + pi(D+d)/2 + (D-d)^2/4C, rounded up to whole teeth
     (the motor is slotted to take up the difference)."""
@@ -286,14 +270,20 @@ def belt_teeth(params: HeadParameters, joint: str, centre_distance: float, teeth
     return math.ceil(length / belt_pitch(params, joint) - 1e-9)
 
 
+def belt_centre(params: HeadParameters, joint: str) -> float:
+    """A belt stage's centre distance as drawn: the yaw's from the yaw axis to its jackshaft's
+    (geometry.yaw_jackshaft.axis, head frame x, y), the tilt's from the tilt axis to its motor's."""
+    if joint == "neck_yaw":
+        return math.hypot(*params.geometry("yaw_jackshaft").vec("axis", 2))
+    tilt, tm = params.joints["eyes_tilt"].origin, params.geometry("head", "tilt_motor")
+    return math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z"))
+
+
 def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
     """(catalog key, joint, teeth) of the two timing belts (head_frame.belt_parts places their envelopes)."""
-    head = params.geometry("head")
-    tilt = params.joints["eyes_tilt"].origin
-    tm = head.node("tilt_motor")
     out = []
-    for joint, distance in (("neck_yaw", abs(head.num("yaw_motor_x"))),
-                            ("eyes_tilt", math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z")))):
+    for joint in ("neck_yaw", "eyes_tilt"):
+        distance = belt_centre(params, joint)
         node = stage(params, joint)
         teeth = belt_teeth(params, joint, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
         profile = params.purchased(belt_key(params, joint)).text("profile")
@@ -333,11 +323,11 @@ def belt_loop(params: HeadParameters, joint: str, centre_distance: float, teeth_
     return geom.single_solid(geom.cut(hull(back, z0, z1), hull(0.0, z0 - 1, z1 + 1)), f"belt {key}")
 
 
-def pulley_note(params: HeadParameters, joint: str, teeth: int, bore: float, hub: bool = False,
-                set_screws: bool = False, hub_node: Node | None = None) -> str:
-    """What the drawing of a pulley must say: its teeth are not modelled; a motor pulley's hub, too thin for a set
-    screw, is bonded to the shaft; a joint pulley's hub takes set screws (kept short: one line on the sheet)."""
-    fixing = ", hub bonded to the shaft" if hub else ""
+def pulley_note(params: HeadParameters, joint: str, teeth: int, bore: float, set_screws: bool = False,
+                hub_node: Node | None = None) -> str:
+    """What the drawing of a pulley must say: its teeth are not modelled; a set-screw pulley's hub takes set screws
+    (kept short: one line on the sheet)."""
+    fixing = ""
     profile = params.purchased(belt_key(params, joint)).text("profile")
     if set_screws:
         screw = params.purchased(joint_set_screw(params, hub_node))

@@ -3,6 +3,8 @@
 """Neck base (plates, uprights, board bay), pitch stage and roll stage, with their drives."""
 from __future__ import annotations
 
+import cadquery as cq
+
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
@@ -322,12 +324,23 @@ def _roll_stage(params: HeadParameters) -> list[Part]:
         Part("neck_roll_stage", "neck_roll_stage", "neck_roll_link", "machined", geom.single_solid(stage, "roll stage"),
              material="aluminium-6082", color=ALUMINIUM, note=ROLL_STAGE_NOTE),
         *hub_screws(params, hub, "neck_roll_link"),
-        Part("neck_yaw_joint_pulley", f"pulley_mxl_{teeth}T_bore{shaft:g}_hub", "neck_roll_link", "machined",
-             mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False), at, material="aluminium-6082",
-             color=ALUMINIUM, note=mounts.pulley_note(params, "neck_yaw", teeth, shaft, set_screws=True)),
+        _yaw_joint_pulley(params, teeth, shaft, at),
     ] + [purchased.set_screw(params, f"neck_yaw_pulley_set_screw_{i}", screw, "neck_roll_link", at * frame)
          for i, frame in enumerate(mounts.set_screw_frames(params, "neck_yaw", shaft, outboard=False))] \
         + yaw_bearings.shaft_parts(params, zy)
+
+
+def _yaw_joint_pulley(params: HeadParameters, teeth: int, shaft: float, at: cq.Location) -> Part:
+    """A catalogue pulley where the parameter file lists one for the stage's profile, else made to the drawing."""
+    profile = params.purchased(mounts.belt_key(params, "neck_yaw")).text("profile").lower()
+    key = f"{profile}-pulley-{teeth}T-bore{shaft:g}"
+    shape = mounts.joint_pulley(params, "neck_yaw", teeth, shaft, outboard=False)
+    note = mounts.pulley_note(params, "neck_yaw", teeth, shaft, set_screws=True)
+    if params.root.node("purchased").has(key):
+        return Part("neck_yaw_joint_pulley", key, "neck_roll_link", "purchased", shape, at,
+                    mass=params.purchased(key).num("mass"), color=ALUMINIUM, note=note)
+    return Part("neck_yaw_joint_pulley", f"pulley_{profile}_{teeth}T_bore{shaft:g}_hub", "neck_roll_link", "machined",
+                shape, at, material="aluminium-6082", color=ALUMINIUM, note=note)
 
 
 def pitch_bearing_at(params: HeadParameters) -> float:
