@@ -47,6 +47,7 @@ def test_the_design_has_one_fixed_and_one_floating_bearing_per_shaft(report):
         ("neck_roll", "gearhead + floating", "neck_roll_gearhead"),
         ("neck_yaw", "cross-located", "neck_yaw_bearing_lower + neck_yaw_bearing_upper"),
         ("eyes_tilt", "fixed + floating", "eyes_tilt_bearing_right"),
+        ("neck_yaw_jackshaft", "fixed + floating", "neck_yaw_jackshaft_bearing_fixed"),
         ("eyes_tilt_jackshaft", "fixed + floating", "eyes_tilt_jackshaft_bearing_fixed")]
 
 
@@ -163,6 +164,7 @@ def test_the_package_reports_the_arrangement(fab):
     assert data["ok"] and data["problems"] == []
     assert {j["joint"]: j["arrangement"] for j in data["joints"]} == {
         "neck_pitch": "gearhead + floating", "neck_roll": "gearhead + floating", "neck_yaw": "cross-located",
-        "eyes_tilt": "fixed + floating", "eyes_tilt_jackshaft": "fixed + floating"}
+        "eyes_tilt": "fixed + floating", "neck_yaw_jackshaft": "fixed + floating",
+        "eyes_tilt_jackshaft": "fixed + floating"}
     text = (fab / "reports" / "bearing-arrangement.txt").read_text()
     assert "neck_pitch_bearing_right (skf-61800-2RS): floating" in text

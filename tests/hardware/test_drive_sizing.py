@@ -102,18 +102,22 @@ def test_capacities_are_the_urdf_efforts(params, link_props):
 
 @HEAVY
 def test_the_motor_capacity_is_what_the_current_limit_allows(params, link_props):
-    """kt x the board's current limit x N x eta where that is below the motor's continuous rating (pitch), the
-    continuous rating where the limit allows more (roll); kt = U / omega0 from the catalogue."""
+    """kt x the board's current limit x N x eta where that is below the motor's continuous rating (pitch and roll,
+    whose limits share their board's 4 A), the continuous rating where the limit allows more (yaw's 550 mA);
+    kt = U / omega0 from the catalogue."""
     rows = {j.joint: j for j in drive_sizing.size(params, link_props).joints}
     data = yaml.safe_load(DEFAULT_PATH.read_text())
-    for joint, starved in (("neck_pitch", True), ("neck_roll", False)):
+    for joint, starved in (("neck_pitch", True), ("neck_roll", True), ("neck_yaw", False)):
         drive = data["drives"][joint]
         motor, gear = data["purchased"][drive["motor"]], data["purchased"][drive["gearhead"]]
         kt = motor["voltage"] / (motor["no_load_speed_rpm"] * math.pi / 30)
         amps = data["motor_control"]["joints"][joint]["current_limit"] / 1000
         assert (kt * amps < motor["continuous_torque_mNm"] / 1000) == starved
         at_motor = min(kt * amps, motor["continuous_torque_mNm"] / 1000)
-        assert rows[joint].motor_capacity_Nm == pytest.approx(at_motor * gear["ratio"] * gear["efficiency"], rel=1e-9)
+        pulleys = data["geometry"]["pulleys"]["yaw"]   # the yaw's belt stage after its gearhead
+        belt = pulleys["joint_teeth"] / pulleys["motor_teeth"] if joint == "neck_yaw" else 1
+        assert rows[joint].motor_capacity_Nm == pytest.approx(at_motor * gear["ratio"] * gear["efficiency"] * belt,
+                                                              rel=1e-9)
         assert rows[joint].current_limited == starved
 
 

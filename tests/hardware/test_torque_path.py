@@ -343,8 +343,9 @@ def test_a_clamp_naming_a_wrong_coupling_is_refused(tmp_path):
 
 
 def _mxl_yaw(data):
-    """The yaw stage back on MXL stock: its pulleys redrawn at the MXL pitch, bought as the XL ones are."""
-    data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5)
+    """The yaw stage back on MXL stock, with its old 36T joint pulley (a 20T MXL pulley is smaller than the 15 mm
+    shaft): its pulleys redrawn at the MXL pitch, the motor pulley bought as the XL one is."""
+    data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5, joint_teeth=36)
     data["purchased"]["mxl-pulley-14T-bore6"] = dict(data["purchased"]["xl-pulley-14T-bore6"])
 
 
