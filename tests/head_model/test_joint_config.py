@@ -13,7 +13,7 @@ def test_reductions_include_the_belts(params):
     cfg = joint_config.config(params)
     j = {e["name"]: e for e in cfg["joints"]}
     assert j["neck_pitch"]["reduction"] == 66
-    assert j["neck_yaw"]["reduction"] == pytest.approx(66 * 36 / 14)
+    assert j["neck_yaw"]["reduction"] == pytest.approx(66 * 20 / 14)   # the 22/7 66:1 and the yaw belt, 14T to 20T
     assert j["neck_roll"]["reduction"] == 246
     assert j["eyes_tilt"]["reduction"] == pytest.approx(43 * 24 / 14)   # the 16/7 43:1 and the tilt belt
     assert j["left_eye_pan"]["motor_counts_per_joint_degree"] == pytest.approx(4 * 512 * 43 / 360)
