@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import cadquery as cq
 
-from robogene_head_model.params import HeadParameters, Node
+from robogene_head_model.params import HeadParameters
 
 from . import jackshaft, mounts
 from .base import Part
@@ -29,16 +29,8 @@ def stage(params: HeadParameters) -> jackshaft.Stage:
                            plate="side plate")
 
 
-def node(params: HeadParameters) -> Node:
-    return jackshaft.node(params, stage(params))
-
-
 def layout(params: HeadParameters) -> jackshaft.Layout:
     return jackshaft.layout(params, stage(params))
-
-
-def screw_frames(params: HeadParameters) -> dict[str, list[cq.Location]]:
-    return jackshaft.screw_frames(params, stage(params))
 
 
 def build(params: HeadParameters) -> list[Part]:

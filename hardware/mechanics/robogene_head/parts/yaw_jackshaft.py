@@ -15,7 +15,7 @@ import math
 
 import cadquery as cq
 
-from robogene_head_model.params import HeadParameters, Node, ParameterError
+from robogene_head_model.params import HeadParameters, ParameterError
 
 from . import jackshaft, mounts
 from .base import Part, loc
@@ -50,17 +50,8 @@ def stage(params: HeadParameters) -> jackshaft.Stage:
                            placement=loc(x, y, 0, rz=turn) * loc(rx=-90))
 
 
-def node(params: HeadParameters) -> Node:
-    return jackshaft.node(params, stage(params))
-
-
 def layout(params: HeadParameters) -> jackshaft.Layout:
     return jackshaft.layout(params, stage(params))
-
-
-def screw_frames(params: HeadParameters) -> dict[str, list[cq.Location]]:
-    """Each screw's frame in the stage frame (jackshaft.screw_frames)."""
-    return jackshaft.screw_frames(params, stage(params))
 
 
 def build(params: HeadParameters) -> list[Part]:
