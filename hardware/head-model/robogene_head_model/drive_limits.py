@@ -61,6 +61,15 @@ def belt_ratio(params: HeadParameters, joint: str) -> float:
     return pulleys.num("joint_teeth", positive=True) / pulleys.num("motor_teeth", positive=True)
 
 
+def belt_centre(params: HeadParameters, joint: str) -> float:
+    """A belt stage's centre distance (mm), as the CAD draws it: the yaw's from the yaw axis to its jackshaft's
+    (geometry.yaw_jackshaft.axis, head frame x, y), the tilt's from the tilt axis to its motor's."""
+    if joint == "neck_yaw":
+        return math.hypot(*params.geometry("yaw_jackshaft").vec("axis", 2))
+    tilt, tm = params.joints["eyes_tilt"].origin, params.geometry("head", "tilt_motor")
+    return math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z"))
+
+
 def _motor_pulley_radius(params: HeadParameters, joint: str) -> float:
     """Pitch radius of the motor pulley in metres."""
     stage = params.geometry("pulleys", BELTED[joint])

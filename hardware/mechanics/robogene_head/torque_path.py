@@ -112,9 +112,8 @@ def _pitch_diameter(stage: Node, teeth: int) -> float:
 
 
 def _belt_centre(params: HeadParameters, joint: str) -> float:
-    """The belt stage's centre distance, as the CAD places the motor pulley (parts/mounts.belt_centre)."""
-    from .parts import mounts
-    return mounts.belt_centre(params, joint)
+    """The belt stage's centre distance, as the CAD places the motor pulley (drive_limits.belt_centre)."""
+    return drive_limits.belt_centre(params, joint)
 
 
 def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:

@@ -7,6 +7,7 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model import drive_limits
 from robogene_head_model.params import HeadParameters, Node, ParameterError
 
 from .. import geom
@@ -270,20 +271,11 @@ def belt_teeth(params: HeadParameters, joint: str, centre_distance: float, teeth
     return math.ceil(length / belt_pitch(params, joint) - 1e-9)
 
 
-def belt_centre(params: HeadParameters, joint: str) -> float:
-    """A belt stage's centre distance as drawn: the yaw's from the yaw axis to its jackshaft's
-    (geometry.yaw_jackshaft.axis, head frame x, y), the tilt's from the tilt axis to its motor's."""
-    if joint == "neck_yaw":
-        return math.hypot(*params.geometry("yaw_jackshaft").vec("axis", 2))
-    tilt, tm = params.joints["eyes_tilt"].origin, params.geometry("head", "tilt_motor")
-    return math.hypot(tilt[0] - tm.num("x"), tilt[2] - tm.num("z"))
-
-
 def belts(params: HeadParameters) -> list[tuple[str, str, int]]:
     """(catalog key, joint, teeth) of the two timing belts (head_frame.belt_parts places their envelopes)."""
     out = []
     for joint in ("neck_yaw", "eyes_tilt"):
-        distance = belt_centre(params, joint)
+        distance = drive_limits.belt_centre(params, joint)
         node = stage(params, joint)
         teeth = belt_teeth(params, joint, distance, int(node.num("motor_teeth")), int(node.num("joint_teeth")))
         profile = params.purchased(belt_key(params, joint)).text("profile")

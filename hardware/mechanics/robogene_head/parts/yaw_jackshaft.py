@@ -15,9 +15,10 @@ import math
 
 import cadquery as cq
 
+from robogene_head_model import drive_limits
 from robogene_head_model.params import HeadParameters, ParameterError
 
-from . import jackshaft, mounts
+from . import jackshaft
 from .base import Part, loc
 
 JOINT = "neck_yaw"
@@ -35,7 +36,7 @@ def axis(params: HeadParameters) -> tuple[float, float]:
 
 def centre_distance(params: HeadParameters) -> float:
     """The belt's centre distance as drawn: from the yaw axis to the jackshaft's."""
-    return mounts.belt_centre(params, JOINT)
+    return drive_limits.belt_centre(params, JOINT)
 
 
 def stage(params: HeadParameters) -> jackshaft.Stage:
