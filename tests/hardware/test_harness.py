@@ -208,7 +208,7 @@ def test_the_build_stops_on_a_violation(params, parts, tmp_path):
     p2 = edited(tmp_path, thicker)
     with pytest.raises(harness_build.HarnessError, match=r"(?s)harness check failed.*signal-28awg x\d bends to R"):
         harness_build.build(p2, parts, tmp_path / "fab", Cache(tmp_path / "state.json"), catalog.load(),
-                            Progress(open("/dev/null", "w")))
+                            Progress(open("/dev/null", "w")), "geometry")
     assert "FAILED" in (tmp_path / "fab" / "reports" / "harness.txt").read_text()
 
 
@@ -236,23 +236,27 @@ def test_package_holds_the_harness(fab, params):
 
 
 def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path):
-    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them."""
+    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them; a changed
+    geometry re-measures the spans' clearance."""
     from robogene_bom import catalog
     from robogene_head.cache import Cache
     from robogene_head.progress import Progress
     import io
     cache, out = Cache(tmp_path / "state.json"), tmp_path / "fab"
     log = io.StringIO()
-    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
-    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log))
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log), "geometry")
+    harness_build.build(params, parts, out, cache, catalog.load(), Progress(log), "geometry")
     assert log.getvalue().count("harness: unchanged") == 1
     data = yaml.safe_load(catalog.DEFAULT_PATH.read_text())
     data["parts"]["jst-PHR-4"]["mpn"] = "PHR-4-OTHER"
     changed = tmp_path / "catalog.yaml"
     changed.write_text(yaml.safe_dump(data))
-    harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log))
+    harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log), "geometry")
     assert log.getvalue().count("harness: unchanged") == 1
     assert "PHR-4-OTHER" in html.unescape((out / "harness" / "harness-neck-pitch-roll.svg").read_text())
+    # The spans' clearance depends on every part's shape: a changed geometry digest measures it again.
+    harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log), "geometry, a part moved")
+    assert log.getvalue().count("harness: unchanged") == 1
 
 
 def test_every_brake_has_its_cable(params, parts):

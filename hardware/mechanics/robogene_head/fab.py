@@ -156,10 +156,10 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     sys.path.insert(0, str(REPO / "hardware" / "bom"))
     from robogene_bom import catalog as catalog_mod
     from robogene_bom.catalog import CatalogError
-    with _fails_build(harness_build.HarnessError, PinoutError, CatalogError, RuntimeError):
-        harness_lines = harness_build.build(params, parts, out, cache, catalog_mod.load(), progress)
     geometry_key = digest([(p.name, hashes[p.design], p.link, _placement_key(p)) for p in parts],
                           [(j.name, j.parent, j.child, j.origin, j.axis, j.lower, j.upper) for j in params.joints.values()])
+    with _fails_build(harness_build.HarnessError, PinoutError, CatalogError, RuntimeError):
+        harness_lines = harness_build.build(params, parts, out, cache, catalog_mod.load(), progress, geometry_key)
 
     # 3. Link meshes for the URDF, mass properties, URDF. The meshes leave out the boards (inside the skirt;
     # KiCad's component models are not watertight meshes); their mass is in the inertias.

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """The harness step of the fabrication build: plan the harness from the parameters and the assembly, write its
 report, stop the build when a cable is over its bend radius or twist limit, draw it with WireViz into
-build/fab/harness/, and hand its BOM lines to the BOM. Cached on everything it is made from."""
+build/fab/harness/, and hand its BOM lines to the BOM. The spans' clearance of the parts (clearance.py) is measured
+and reported, not yet enforced. Cached on everything it is made from."""
 from __future__ import annotations
 
 import hashlib
@@ -13,7 +14,7 @@ from robogene_head_model.params import HeadParameters
 
 from ..cache import Cache, digest
 from ..geom import exact_bounds
-from . import drawing, pinout, plan, report, spec
+from . import clearance, drawing, pinout, plan, report, spec
 
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))
 
@@ -22,9 +23,10 @@ class HarnessError(RuntimeError):
     """A harness check failed; the message lists every violation and names the report."""
 
 
-def _key(params: HeadParameters, parts, catalog) -> str:
+def _key(params: HeadParameters, parts, catalog, geometry: str) -> str:
     """Everything the harness is made from: parameters, its code, the board's pinout sources, the catalog (the
-    drawings name the mating parts by MPN) and where the parts it reaches sit."""
+    drawings name the mating parts by MPN), where the parts it reaches sit, and every part's geometry and placement
+    (`geometry`, the caller's digest of them: the spans' clearance depends on all parts)."""
     code = [hashlib.sha256(p.read_bytes()).hexdigest() for p in SOURCES]
     code.append(hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest())
     board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
@@ -32,22 +34,26 @@ def _key(params: HeadParameters, parts, catalog) -> str:
     for p in parts:
         lo, hi = exact_bounds(p.shape)
         centres.append((p.name, p.link, *(round(float(c), 4) for c in (lo + hi) / 2)))
-    return digest(params.path.read_bytes(), code, board, centres)
+    return digest(params.path.read_bytes(), code, board, centres, geometry)
 
 
-def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progress) -> list[tuple[str, float, str]]:
-    """Returns the harness's BOM lines (catalog key, quantity per head, what for)."""
+def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progress,
+          geometry: str) -> list[tuple[str, float, str]]:
+    """Returns the harness's BOM lines (catalog key, quantity per head, what for). geometry: a digest of every part's
+    shape and placement."""
     folder, reports = out / "harness", out / "reports"
     data, text = folder / "harness.json", reports / "harness.txt"
-    key = _key(params, parts, catalog)
+    key = _key(params, parts, catalog, geometry)
     if cache.fresh("harness", key, [data, text]):
         progress.note("harness: unchanged")
         return [(b["key"], b["per_head"], b["for"]) for b in json.loads(data.read_text())["bom"]]
     progress.note("harness: sweeping the free spans over their joints' ranges")
     h = plan.plan(params, spec.load(params), parts)
+    progress.note("harness: the spans' clearance of the parts")
+    spans_clear = clearance.check(params, h, parts)
     folder.mkdir(parents=True, exist_ok=True)
     reports.mkdir(parents=True, exist_ok=True)
-    text.write_text(report.as_text(h))
+    text.write_text(report.as_text(h, spans_clear))
     if not h.ok:
         data.unlink(missing_ok=True)
         raise HarnessError("harness check failed, see " + str(text) + ":\n  " + "\n  ".join(h.problems))
@@ -56,7 +62,7 @@ def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progr
     for stale in folder.iterdir():
         if stale.is_file() and stale not in written and stale != data:
             stale.unlink()
-    document = report.as_json(h)
+    document = report.as_json(h, spans_clear)
     data.write_text(json.dumps(document, indent=1))
     cache.record("harness", key)
     return [(b["key"], b["per_head"], b["for"]) for b in document["bom"]]

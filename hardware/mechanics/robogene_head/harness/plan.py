@@ -45,6 +45,7 @@ class Span:
     length: float              # cut length of the free span (mm)
     checks: list[ClassCheck] = field(default_factory=list)
     cables: list[str] = field(default_factory=list)
+    members: tuple[tuple[str, CableClass, int], ...] = ()     # (cable, class, wires) of each cable through it
 
 
 @dataclass
@@ -96,12 +97,12 @@ def _path_joints(params: HeadParameters, a: str, b: str) -> tuple[str, ...]:
     return tuple(j for j in CHAIN_JOINTS if (j in ua or j in ub) and j not in common)
 
 
-def _frame(pose: np.ndarray, c: Clamp) -> spans.Frame:
+def frame(pose: np.ndarray, c: Clamp) -> spans.Frame:
     r = pose[:3, :3]
     return spans.Frame(r @ c.at + pose[:3, 3], r @ c.dir, r @ c.up)
 
 
-def _sweep(params: HeadParameters, joints: tuple[str, ...], samples: int):
+def sweep(params: HeadParameters, joints: tuple[str, ...], samples: int):
     ranges = [np.linspace(params.joints[j].lower, params.joints[j].upper, samples) for j in joints]
     for values in itertools.product(*ranges):
         angles = dict(zip(joints, (float(v) for v in values)))
@@ -111,8 +112,8 @@ def _sweep(params: HeadParameters, joints: tuple[str, ...], samples: int):
 def check_span(params: HeadParameters, spec: HarnessSpec, a: Clamp, b: Clamp, users: list[tuple[str, CableClass, int]]) -> Span:
     """users: (cable name, class, wires) of every cable through the span."""
     joints = _path_joints(params, a.link, b.link)
-    poses = list(_sweep(params, joints, spec.sweep_samples))
-    frames = [(angles, _frame(p[a.link], a), _frame(p[b.link], b)) for angles, p in poses]
+    poses = list(sweep(params, joints, spec.sweep_samples))
+    frames = [(angles, frame(p[a.link], a), frame(p[b.link], b)) for angles, p in poses]
     max_chord = max(float(np.linalg.norm(fb.at - fa.at)) for _, fa, fb in frames)
     given = {c.slack for c in (a, b) if c.slack is not None}
     if len(given) > 1:
@@ -120,7 +121,8 @@ def check_span(params: HeadParameters, spec: HarnessSpec, a: Clamp, b: Clamp, us
                              f"different slacks ({', '.join(f'{v:g}' for v in sorted(given))})")
     slack = given.pop() if given else spec.free_slack
     length = math.ceil(max_chord * (1 + slack) / LENGTH_STEP * 2) * LENGTH_STEP / 2   # to 5 mm
-    span = Span(a.name, b.name, joints, len(frames), max_chord, length, cables=[u[0] for u in users])
+    span = Span(a.name, b.name, joints, len(frames), max_chord, length, cables=[u[0] for u in users],
+                members=tuple(users))
     shapes = []
     for angles, fa, fb in frames:
         try:

@@ -73,15 +73,27 @@ def tangent_scale(a: Frame, b: Frame, length: float) -> float:
     return (lo + hi) / 2
 
 
-def shape(a: Frame, b: Frame, length: float) -> Shape:
+@dataclass(frozen=True)
+class Curve:
+    """The span's modelled curve, sampled: points, unit tangents, and the carried face normal and width direction
+    (across a flat cable's width) at each."""
+    points: np.ndarray
+    tangents: np.ndarray
+    normals: np.ndarray
+    widths: np.ndarray
+    speed: np.ndarray
+    second: np.ndarray       # d2p/dt2, for the curvature
+    k: float
+
+
+def curve(a: Frame, b: Frame, length: float, samples: int = SAMPLES) -> Curve:
+    """The curve `length` long from A to B, at `samples` points evenly spaced in its parameter."""
     k = tangent_scale(a, b, length)
-    t = np.linspace(0.0, 1.0, SAMPLES)
+    t = np.linspace(0.0, 1.0, samples)
     p, dp, ddp = _hermite(a, b, k, t)
     speed = np.linalg.norm(dp, axis=1)
     if np.any(speed < 1e-9):
         raise ValueError("the span's curve stops (its clamps point at each other along one line)")
-    cross = np.cross(dp, ddp)
-    curvature = np.linalg.norm(cross, axis=1) / speed**3
     tangents = dp / speed[:, None]
     # Rotation-minimising frame by double reflection (Wang et al. 2008), starting from A's face normal.
     normal = a.up - np.dot(a.up, tangents[0]) * tangents[0]
@@ -101,13 +113,27 @@ def shape(a: Frame, b: Frame, length: float) -> Shape:
         normal /= np.linalg.norm(normal)
         normals.append(normal)
     normals = np.array(normals)
+    return Curve(p, tangents, normals, np.cross(tangents, normals), speed, ddp, k)
+
+
+def arc_lengths(c: Curve) -> np.ndarray:
+    """Distance along the curve from A to each sample (mm)."""
+    steps = np.linalg.norm(np.diff(c.points, axis=0), axis=1)
+    return np.concatenate([[0.0], np.cumsum(steps)])
+
+
+def shape(a: Frame, b: Frame, length: float) -> Shape:
+    c = curve(a, b, length)
+    speed, tangents, normals, ddp = c.speed, c.tangents, c.normals, c.second
+    dp = tangents * speed[:, None]
+    cross = np.cross(dp, ddp)
+    curvature = np.linalg.norm(cross, axis=1) / speed**3
     # Curvature vector = d(tangent)/ds; its component along the face's width direction is in-plane bending.
     kappa_vec = (ddp - np.sum(ddp * tangents, axis=1)[:, None] * tangents) / speed[:, None] ** 2
-    width_dir = np.cross(tangents, normals)
-    inplane = np.abs(np.sum(kappa_vec * width_dir, axis=1))
+    inplane = np.abs(np.sum(kappa_vec * c.widths, axis=1))
     end_up = b.up - np.dot(b.up, tangents[-1]) * tangents[-1]
     end_up /= np.linalg.norm(end_up)
     twist = math.degrees(math.atan2(float(np.dot(np.cross(normals[-1], end_up), tangents[-1])),
                                     float(np.dot(normals[-1], end_up))))
-    return Shape(_length(a, b, k), float(1 / max(curvature.max(), 1e-12)), float(1 / max(inplane.max(), 1e-12)),
+    return Shape(_length(a, b, c.k), float(1 / max(curvature.max(), 1e-12)), float(1 / max(inplane.max(), 1e-12)),
                  twist)

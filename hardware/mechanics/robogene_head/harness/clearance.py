@@ -1,0 +1,165 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Whether each free span's cables pass through the parts: the span's modelled curve (spans.py) over the sweep of
+its joints, with its cables' cross-section round it, against every part of the assembly at that pose.
+
+The round wires of a span are one bundle along the curve, of the diameter that holds their cross-sections at
+PACKING (loose wires laid parallel fill about two thirds of the circle round them: spec.GROUP_FACTOR gives 0.65 to
+0.69 for three to six wires); each flat cable is its own width x thickness band along the curve, turned with the
+curve's carried frame. Near a clamp the cables lie on the part the clamp holds them to: within clamp_zone (mm, along
+the curve) of a clamp, touching the parts of that clamp's link is not counted. Anything else the curve's cables
+touch is a blocked route: a cable cannot be laid where a part is.
+
+The curve is a model of where the cable hangs (a real cable rests on what it meets), so a span it passes through
+a part in is a span whose clamps do not lead the cable past that part; a span clear of every part is one the cable
+can take as modelled."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import fcl
+import numpy as np
+
+from robogene_head_model.params import HeadParameters
+
+from . import spans
+from .plan import Harness, Span, frame, sweep
+
+PACKING = 0.65            # share of a loose bundle's circle its wires fill
+SAMPLES = 81              # points along a span: segments of 1.25 % of its length
+MESH_DEFLECTION = 0.1     # mm, the parts' tessellation
+
+
+@dataclass(frozen=True)
+class Blocked:
+    part: str
+    link: str
+    cable: str            # "bundle" (the round wires) or the flat cable's name
+    at_mm: float          # along the span from its first clamp
+    pose: dict[str, float]
+
+
+@dataclass
+class SpanClearance:
+    a: str
+    b: str
+    bundle_od: float                       # mm, 0 without round wires
+    flat: tuple[tuple[str, float, float], ...]   # (cable, width, thickness)
+    poses: int
+    blocked: list[Blocked] = field(default_factory=list)   # the first pose each part is met in, per cable
+
+    @property
+    def ok(self) -> bool:
+        return not self.blocked
+
+
+@dataclass
+class Clearance:
+    clamp_zone: float
+    spans: list[SpanClearance]
+
+    @property
+    def ok(self) -> bool:
+        return all(s.ok for s in self.spans)
+
+    @property
+    def problems(self) -> list[str]:
+        out = []
+        for s in self.spans:
+            for b in s.blocked:
+                pose = ", ".join(f"{j} {v:+.1f}" for j, v in b.pose.items()) or "rest"
+                what = f"the round wires (bundle {s.bundle_od:.1f} mm)" if b.cable == "bundle" else f"{b.cable}"
+                out.append(f"span {s.a} -> {s.b}: {what} pass through {b.part} ({b.link}) {b.at_mm:.0f} mm from "
+                           f"{s.a}, at {pose}")
+        return out
+
+
+def bundle_od(span: Span) -> float:
+    """Diameter of the bundle of a span's round wires (mm): their cross-sections at PACKING."""
+    area = 0.0
+    for _, cls, wires in span.members:
+        if cls.shape != "round":
+            continue
+        area += wires * cls.wire_od ** 2 if cls.laid == "loose" else cls.od(wires) ** 2
+    return math.sqrt(area / PACKING) if area else 0.0
+
+
+class _Models:
+    """The parts as FCL meshes in their link frames: one per link to find a contact, one per part to name it."""
+
+    def __init__(self, parts):
+        self.parts = [p for p in parts if p.kind != "board"]   # the boards sit in the bay, below every span
+        self.part_models, by_link = [], {}
+        for p in self.parts:
+            verts, tris = p.shape.tessellate(MESH_DEFLECTION, 0.3)
+            v = np.array([(q.x, q.y, q.z) for q in verts], dtype=float)
+            t = np.array(tris, dtype=np.int32)
+            self.part_models.append(_bvh(v, t))
+            acc = by_link.setdefault(p.link, ([], [], 0))
+            acc[0].append(v)
+            acc[1].append(t + acc[2])
+            by_link[p.link] = (acc[0], acc[1], acc[2] + len(v))
+        self.links = {link: _bvh(np.vstack(v), np.vstack(t)) for link, (v, t, _) in by_link.items()}
+
+
+def _bvh(v: np.ndarray, t: np.ndarray):
+    m = fcl.BVHModel()
+    m.beginModel(len(v), len(t))
+    m.addSubModel(v, t)
+    m.endModel()
+    return m
+
+
+def _basis(tangent: np.ndarray, width: np.ndarray) -> np.ndarray:
+    """Rotation whose z is the tangent and x the width direction (the frame FCL's capsule and box are set in)."""
+    z = tangent / np.linalg.norm(tangent)
+    x = width - np.dot(width, z) * z
+    x /= np.linalg.norm(x)
+    return np.column_stack([x, np.cross(z, x), z])
+
+
+def _touches(obj, target) -> bool:
+    return fcl.collide(obj, target, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
+
+
+def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
+    zone = params.root.node("harness").num("clamp_zone", minimum=0)
+    models = _Models(parts)
+    results = []
+    for (x, y), span in harness.spans.items():
+        a, b = harness.spec.clamps[x], harness.spec.clamps[y]
+        od = bundle_od(span)
+        flats = tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
+        sc = SpanClearance(x, y, od, flats, 0)
+        seen: set[tuple[str, str]] = set()
+        for angles, poses in sweep(params, span.joints, harness.spec.sweep_samples):
+            sc.poses += 1
+            c = spans.curve(frame(poses[a.link], a), frame(poses[b.link], b), span.length, SAMPLES)
+            s = spans.arc_lengths(c)
+            links = {link: fcl.CollisionObject(m, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
+                     for link, m in models.links.items()}
+            for j in range(len(s) - 1):
+                p, q = c.points[j], c.points[j + 1]
+                seg = float(np.linalg.norm(q - p))
+                mid_s = (s[j] + s[j + 1]) / 2
+                exempt = {a.link} if mid_s < zone else set()
+                exempt |= {b.link} if span.length - mid_s < zone else set()
+                rot = _basis(q - p, c.widths[j])
+                shapes = [("bundle", fcl.Capsule(od / 2, seg))] if od else []
+                shapes += [(name, fcl.Box(w, t, seg)) for name, w, t in flats]
+                for cable, geometry in shapes:
+                    obj = fcl.CollisionObject(geometry, fcl.Transform(rot, (p + q) / 2))
+                    for link, target in links.items():
+                        if link in exempt or not _touches(obj, target):
+                            continue
+                        for part, model in zip(models.parts, models.part_models):
+                            if part.link != link or (part.name, cable) in seen:
+                                continue
+                            placed = fcl.CollisionObject(model, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
+                            if _touches(obj, placed):
+                                seen.add((part.name, cable))
+                                sc.blocked.append(Blocked(part.name, link, cable, float(mid_s),
+                                                          {k: round(v, 1) for k, v in angles.items()}))
+        results.append(sc)
+    return Clearance(zone, results)

@@ -1,0 +1,117 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: BSD-3-Clause
+"""The spans' clearance of the parts: a part across a span's curve blocks it, and is named; moved aside it does not;
+the clamp's own link may touch the cables within clamp_zone of the clamp, any other part may not; the bundle's
+diameter grows with its wires; flat cables are checked as bands; the package reports it for every span."""
+import dataclasses
+import json
+
+import cadquery as cq
+import numpy as np
+import pytest
+
+from robogene_head import kinematics
+from robogene_head.harness import clearance, plan, spec
+from robogene_head.harness.plan import Harness, Span
+from robogene_head.parts.base import Part, loc
+
+
+def _box(name, link, at, size=(6, 6, 6)):
+    return Part(name, name, link, "machined", cq.Workplane().box(*size).val(), loc(*at))
+
+
+@pytest.fixture(scope="module")
+def base(params):
+    return spec.load(params)
+
+
+def _harness(base, members, a_at=(0, 0, 0), b_at=(100, 20, 0), links=("neck_base", "neck_base"), up=(0, 0, 1.0)):
+    """One span at rest (no joints) from clamp a to clamp b, both clamps along +x (an S in the x-y plane), 110 mm
+    long."""
+    a = spec.Clamp("a", links[0], np.array(a_at, float), np.array([1.0, 0, 0]), np.array(up, float))
+    b = spec.Clamp("b", links[1], np.array(b_at, float), np.array([1.0, 0, 0]), np.array(up, float))
+    s = dataclasses.replace(base, clamps={"a": a, "b": b})
+    span = Span("a", "b", (), 1, 100.0, 110.0, members=tuple(members))
+    return Harness(s, {("a", "b"): span}, [], [], [])
+
+
+def _round(base, wires=8):
+    return [("wires", base.classes["signal-28awg"], wires)]
+
+
+def _middle(params, h):
+    """The span's curve at its middle sample, at rest, in the world (the neck base's frame): point, width direction."""
+    a, b = h.spec.clamps["a"], h.spec.clamps["b"]
+    poses = kinematics.link_poses(params, {})
+    c = clearance.spans.curve(plan.frame(poses[a.link], a), plan.frame(poses[b.link], b), 110.0, 81)
+    return c.points[40], c.widths[40]
+
+
+def test_a_part_across_the_span_blocks_it_and_is_named(params, base):
+    h = _harness(base, _round(base))
+    mid, _ = _middle(params, h)
+    c = clearance.check(params, h, [_box("elsewhere", "head_frame", (0, 0, 0)), _box("across", "neck_base", mid)])
+    assert not c.ok
+    (s,) = c.spans
+    assert [b.part for b in s.blocked] == ["across"]
+    assert 40 < s.blocked[0].at_mm < 60
+    assert "span a -> b: the round wires" in c.problems[0] and "across (neck_base)" in c.problems[0]
+
+
+def test_a_part_beside_the_span_does_not(params, base):
+    h = _harness(base, _round(base))
+    od = clearance.bundle_od(h.spans[("a", "b")])
+    mid, _ = _middle(params, h)
+    up = np.array([0, 0, 1.0])     # the S lies in the x-y plane: a box above it, its face od/2 + 0.3 above the centre line
+    assert clearance.check(params, h, [_box("above", "neck_base", mid + up * (3 + od / 2 + 0.3))]).ok
+    # ...and just into the bundle's surface it blocks: the cross-section counts, not only the centre line.
+    assert not clearance.check(params, h, [_box("grazing", "neck_base", mid + up * (3 + od / 2 - 0.3))]).ok
+
+
+def test_the_clamps_own_link_may_touch_near_the_clamp(params, base):
+    zone = params.root.node("harness").num("clamp_zone")
+    assert zone > 4
+    head = kinematics.link_poses(params, {})["head_frame"]
+    assert np.allclose(head[:3, :3], np.eye(3))    # at rest the head's frame is the base's, moved
+
+    def in_head(p):
+        return tuple(np.array(p, float) - head[:3, 3])
+    h = _harness(base, _round(base), b_at=in_head((100, 20, 0)), links=("neck_base", "head_frame"))
+    near_a = (2.5, 0, 0)          # within the zone of clamp a, which is on neck_base
+    assert clearance.check(params, h, [_box("plate", "neck_base", near_a, (2, 20, 20))]).ok
+    c = clearance.check(params, h, [_box("other_link", "head_frame", in_head(near_a), (2, 20, 20))])
+    assert [b.part for b in c.spans[0].blocked] == ["other_link"]
+    far, _ = _middle(params, h)           # the clamp's own link, away from the clamp, blocks
+    assert not clearance.check(params, h, [_box("plate", "neck_base", far, (2, 20, 20))]).ok
+
+
+def test_the_bundle_grows_with_its_wires(base):
+    cls = base.classes["signal-28awg"]
+    one = clearance.bundle_od(Span("a", "b", (), 1, 1, 1, members=(("w", cls, 1),)))
+    many = clearance.bundle_od(Span("a", "b", (), 1, 1, 1, members=(("w", cls, 4), ("v", cls, 12))))
+    assert many == pytest.approx(one * 4, rel=1e-9)      # 16 wires: 4 x the diameter of one at the same packing
+    assert one == pytest.approx(cls.wire_od / clearance.PACKING ** 0.5)
+
+
+def test_a_flat_cable_is_checked_across_its_width(params, base):
+    flat = base.camera_class
+    assert flat.width > 10
+    h = _harness(base, [("camera", flat, 1)], up=(0, 1.0, 0))
+    mid, width = _middle(params, h)
+    # The clamps' face normal is y, in the S's plane, so the band stands on edge, its width along z: a post at the
+    # band's edge, far from its centre line (which stays in z = 0), is met; beyond the edge it is not.
+    assert abs(width[2]) > 1 - 1e-9
+    edge = flat.width / 2
+    assert not clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge - 1.5), (2, 2, 2))]).ok
+    assert clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge + 1.5), (2, 2, 2))]).ok
+
+
+def test_the_package_reports_every_spans_clearance(fab):
+    data = json.loads((fab / "harness" / "harness.json").read_text())
+    cl = data["span_clearance"]
+    assert cl["enforced"] is False
+    assert {(s["from"], s["to"]) for s in cl["spans"]} == {(s["from"], s["to"]) for s in data["spans"]}
+    assert all(s["poses"] >= 1 for s in cl["spans"])
+    assert cl["ok"] == (not cl["problems"])
+    text = (fab / "reports" / "harness.txt").read_text()
+    assert "Span clearance" in text
