@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The spans' clearance of the parts: a part across a span's curve blocks it, and is named; moved aside it does not;
 the clamp's own link may touch the cables within clamp_zone of the clamp, any other part may not; the bundle's
-diameter grows with its wires; flat cables are checked as bands; the package reports it for every span."""
+diameter grows with its wires; flat cables are checked as bands; a clamp must lie on or near a part of its own link,
+not inside one; the package reports it for every span and every clamp."""
 import dataclasses
 import json
 
@@ -35,6 +36,11 @@ def _harness(base, members, a_at=(0, 0, 0), b_at=(100, 20, 0), links=("neck_base
     return Harness(s, {("a", "b"): span}, [], [], [])
 
 
+def _clear(c):
+    """Every span clear of the parts (the clamps' support is its own test below)."""
+    return all(s.ok for s in c.spans)
+
+
 def _round(base, wires=8):
     return [("wires", base.classes["signal-28awg"], wires)]
 
@@ -51,11 +57,12 @@ def test_a_part_across_the_span_blocks_it_and_is_named(params, base):
     h = _harness(base, _round(base))
     mid, _ = _middle(params, h)
     c = clearance.check(params, h, [_box("elsewhere", "head_frame", (0, 0, 0)), _box("across", "neck_base", mid)])
-    assert not c.ok
+    assert not _clear(c)
     (s,) = c.spans
     assert [b.part for b in s.blocked] == ["across"]
     assert 40 < s.blocked[0].at_mm < 60
-    assert "span a -> b: the round wires" in c.problems[0] and "across (neck_base)" in c.problems[0]
+    spans = [p for p in c.problems if p.startswith("span")]
+    assert "span a -> b: the round wires" in spans[0] and "across (neck_base)" in spans[0]
 
 
 def test_a_part_beside_the_span_does_not(params, base):
@@ -63,9 +70,9 @@ def test_a_part_beside_the_span_does_not(params, base):
     od = clearance.bundle_od(h.spans[("a", "b")])
     mid, _ = _middle(params, h)
     up = np.array([0, 0, 1.0])     # the S lies in the x-y plane: a box above it, its face od/2 + 0.3 above the centre line
-    assert clearance.check(params, h, [_box("above", "neck_base", mid + up * (3 + od / 2 + 0.3))]).ok
+    assert _clear(clearance.check(params, h, [_box("above", "neck_base", mid + up * (3 + od / 2 + 0.3))]))
     # ...and just into the bundle's surface it blocks: the cross-section counts, not only the centre line.
-    assert not clearance.check(params, h, [_box("grazing", "neck_base", mid + up * (3 + od / 2 - 0.3))]).ok
+    assert not _clear(clearance.check(params, h, [_box("grazing", "neck_base", mid + up * (3 + od / 2 - 0.3))]))
 
 
 def test_the_clamps_own_link_may_touch_near_the_clamp(params, base):
@@ -78,11 +85,11 @@ def test_the_clamps_own_link_may_touch_near_the_clamp(params, base):
         return tuple(np.array(p, float) - head[:3, 3])
     h = _harness(base, _round(base), b_at=in_head((100, 20, 0)), links=("neck_base", "head_frame"))
     near_a = (2.5, 0, 0)          # within the zone of clamp a, which is on neck_base
-    assert clearance.check(params, h, [_box("plate", "neck_base", near_a, (2, 20, 20))]).ok
+    assert _clear(clearance.check(params, h, [_box("plate", "neck_base", near_a, (2, 20, 20))]))
     c = clearance.check(params, h, [_box("other_link", "head_frame", in_head(near_a), (2, 20, 20))])
     assert [b.part for b in c.spans[0].blocked] == ["other_link"]
     far, _ = _middle(params, h)           # the clamp's own link, away from the clamp, blocks
-    assert not clearance.check(params, h, [_box("plate", "neck_base", far, (2, 20, 20))]).ok
+    assert not _clear(clearance.check(params, h, [_box("plate", "neck_base", far, (2, 20, 20))]))
 
 
 def test_the_bundle_grows_with_its_wires(base):
@@ -102,16 +109,45 @@ def test_a_flat_cable_is_checked_across_its_width(params, base):
     # band's edge, far from its centre line (which stays in z = 0), is met; beyond the edge it is not.
     assert abs(width[2]) > 1 - 1e-9
     edge = flat.width / 2
-    assert not clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge - 1.5), (2, 2, 2))]).ok
-    assert clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge + 1.5), (2, 2, 2))]).ok
+    assert not _clear(clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge - 1.5), (2, 2, 2))]))
+    assert _clear(clearance.check(params, h, [_box("post", "neck_base", mid + width * (edge + 1.5), (2, 2, 2))]))
 
 
-def test_the_package_reports_every_spans_clearance(fab):
+def test_the_package_reports_every_spans_clearance(fab, params):
     data = json.loads((fab / "harness" / "harness.json").read_text())
     cl = data["span_clearance"]
     assert cl["enforced"] is False
     assert {(s["from"], s["to"]) for s in cl["spans"]} == {(s["from"], s["to"]) for s in data["spans"]}
     assert all(s["poses"] >= 1 for s in cl["spans"])
+    assert {k["name"] for k in cl["clamps"]} == set(params.root.node("harness").raw("clamps"))
     assert cl["ok"] == (not cl["problems"])
     text = (fab / "reports" / "harness.txt").read_text()
     assert "Span clearance" in text
+
+
+def test_a_clamp_must_be_held_by_a_part_of_its_link(params, base):
+    standoff = params.root.node("harness").num("clamp_standoff")
+    h = _harness(base, _round(base))
+    # a plate under both clamps, its top face 1 mm below them: both are held
+    plate = _box("plate", "neck_base", (50, 10, -1.5), (120, 40, 1))
+    held = {k.name: k for k in clearance.check(params, h, [plate]).clamps}
+    assert held["a"].ok and held["b"].ok and held["a"].nearest == "plate"
+    assert held["a"].distance == pytest.approx(1.0, abs=0.05)
+    # the plate further down than clamp_standoff: nothing holds them
+    low = _box("plate", "neck_base", (50, 10, -standoff - 1.5), (120, 40, 1))
+    c = clearance.check(params, h, [low])
+    assert not c.ok and not c.clamps[0].ok
+    assert any(p.startswith("clamp a:") and "nothing holds it" in p for p in c.problems)
+    # a part of another link next to the clamp does not hold it
+    other = _box("other", "head_frame", (0, 0, -118), (6, 6, 1))
+    assert not {k.name: k for k in clearance.check(params, h, [low, other]).clamps}["a"].ok
+
+
+def test_a_clamp_inside_a_part_is_refused_and_one_on_its_face_is_not(params, base):
+    h = _harness(base, _round(base))
+    around = _box("block", "neck_base", (0, 0, 0), (8, 8, 8))          # clamp a at its centre
+    c = clearance.check(params, h, [around])
+    assert {k.name: k for k in c.clamps}["a"].inside == "block"
+    assert any("clamp a: inside block (neck_base)" in p for p in c.problems)
+    on_face = _box("block", "neck_base", (0, 0, -4), (8, 8, 8))        # its top face through clamp a
+    assert {k.name: k for k in clearance.check(params, h, [on_face]).clamps}["a"].ok

@@ -12,12 +12,17 @@ touch is a blocked route: a cable cannot be laid where a part is.
 
 The curve is a model of where the cable hangs (a real cable rests on what it meets), so a span it passes through
 a part in is a span whose clamps do not lead the cable past that part; a span clear of every part is one the cable
-can take as modelled."""
+can take as modelled.
+
+A clamp is a clip or tie on a part's face: each must lie outside every part of its link and within clamp_standoff
+(mm) of one of them, the part that holds it. A clamp inside a part, or further from every part of its link, has
+nothing to hold it."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
 
+import cadquery as cq
 import fcl
 import numpy as np
 
@@ -29,6 +34,7 @@ from .plan import Harness, Span, frame, sweep
 PACKING = 0.65            # share of a loose bundle's circle its wires fill
 SAMPLES = 81              # points along a span: segments of 1.25 % of its length
 MESH_DEFLECTION = 0.1     # mm, the parts' tessellation
+ON_FACE = 2 * MESH_DEFLECTION   # mm: a clamp this close to a part's mesh is on its face
 
 
 @dataclass(frozen=True)
@@ -54,18 +60,39 @@ class SpanClearance:
         return not self.blocked
 
 
+@dataclass(frozen=True)
+class ClampSupport:
+    name: str
+    link: str
+    nearest: str          # the nearest part of its link
+    distance: float       # mm from that part's surface
+    inside: str           # the part of its link it lies inside, or ""
+    standoff: float
+
+    @property
+    def ok(self) -> bool:
+        return not self.inside and self.distance <= self.standoff
+
+
 @dataclass
 class Clearance:
     clamp_zone: float
     spans: list[SpanClearance]
+    clamps: list[ClampSupport] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
-        return all(s.ok for s in self.spans)
+        return all(s.ok for s in self.spans) and all(c.ok for c in self.clamps)
 
     @property
     def problems(self) -> list[str]:
         out = []
+        for c in self.clamps:
+            if c.inside:
+                out.append(f"clamp {c.name}: inside {c.inside} ({c.link}): nothing can hold a cable there")
+            elif not c.ok:
+                out.append(f"clamp {c.name}: {c.distance:.1f} mm from the nearest part of {c.link} ({c.nearest}), more "
+                           f"than clamp_standoff {c.standoff:g} mm: nothing holds it")
         for s in self.spans:
             for b in s.blocked:
                 pose = ", ".join(f"{j} {v:+.1f}" for j, v in b.pose.items()) or "rest"
@@ -123,8 +150,29 @@ def _touches(obj, target) -> bool:
     return fcl.collide(obj, target, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
 
 
+def clamp_supports(harness: Harness, models: _Models, standoff: float) -> list[ClampSupport]:
+    out = []
+    for name, c in harness.spec.clamps.items():
+        point = fcl.CollisionObject(fcl.Sphere(1e-3), fcl.Transform(c.at))
+        nearest, distance, inside = "", math.inf, ""
+        for part, model in zip(models.parts, models.part_models):
+            if part.link != c.link:
+                continue
+            d = fcl.distance(point, fcl.CollisionObject(model, fcl.Transform()), fcl.DistanceRequest(),
+                             fcl.DistanceResult())
+            if d < distance:
+                nearest, distance = part.name, max(d, 0.0)
+            # FCL measures to the mesh's surface from either side: a point that far from the surface and within the
+            # solid is inside it (on the face, where a clip sits, is not).
+            if not inside and d > ON_FACE and part.shape.isInside(cq.Vector(*map(float, c.at)), 1e-3):
+                inside = part.name
+        out.append(ClampSupport(name, c.link, nearest, distance, inside, standoff))
+    return out
+
+
 def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
-    zone = params.root.node("harness").num("clamp_zone", minimum=0)
+    node = params.root.node("harness")
+    zone = node.num("clamp_zone", minimum=0)
     models = _Models(parts)
     results = []
     for (x, y), span in harness.spans.items():
@@ -162,4 +210,4 @@ def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
                                 sc.blocked.append(Blocked(part.name, link, cable, float(mid_s),
                                                           {k: round(v, 1) for k, v in angles.items()}))
         results.append(sc)
-    return Clearance(zone, results)
+    return Clearance(zone, results, clamp_supports(harness, models, node.num("clamp_standoff", positive=True)))

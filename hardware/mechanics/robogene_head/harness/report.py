@@ -13,6 +13,8 @@ from .plan import Harness, bom_lines
 
 def clearance_json(c: Clearance) -> dict:
     return {"ok": c.ok, "enforced": False, "clamp_zone_mm": c.clamp_zone, "problems": c.problems,
+            "clamps": [{"name": k.name, "link": k.link, "nearest": k.nearest, "distance_mm": round(k.distance, 2),
+                        "inside": k.inside or None, "standoff_mm": k.standoff, "ok": k.ok} for k in c.clamps],
             "spans": [{"from": s.a, "to": s.b, "poses": s.poses, "bundle_od_mm": round(s.bundle_od, 2),
                        "flat": [{"cable": n, "width_mm": w, "thickness_mm": t} for n, w, t in s.flat],
                        "blocked": [{"part": b.part, "link": b.link, "cable": b.cable, "at_mm": round(b.at_mm, 1),
@@ -27,8 +29,11 @@ def clearance_text(c: Clearance) -> list[str]:
         flats = ", ".join(n for n, _, _ in s.flat) or "-"
         parts = ", ".join(sorted({b.part for b in s.blocked})) or "none"
         out.append(f"{s.a + ' -> ' + s.b:<28} {s.bundle_od:>11.1f} {flats:<26} {s.poses:>6} {parts}")
+    out += ["", f"{'clamp':<14} {'link':<16} {'held by (nearest part)':<36} {'mm':>6}  inside"]
+    for k in c.clamps:
+        out.append(f"{k.name:<14} {k.link:<16} {k.nearest:<36} {k.distance:>6.1f}  {k.inside or '-'}")
     if c.ok:
-        out.append("OK: every span's cables clear the parts")
+        out.append("OK: every span's cables clear the parts, every clamp is held")
     else:
         out.append("NOT MET, and not yet enforced (the routes are still to be redesigned; docs/fabricate.md, "
                    "\"Wire the head\"):")
