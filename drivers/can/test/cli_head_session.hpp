@@ -35,19 +35,20 @@ inline std::string robogene_bin() {
 }
 
 // Starts `robogene can-sim`; the caller stops it with SIGTERM.
-// `pose`: can-sim's --pose (the joints' angles at power-up), or "" for all at 0.
-inline pid_t start_simulator(const std::string& bus, const std::string& log, const std::string& pose = "") {
-  const std::string bin = robogene_bin();
-  const std::string ini = head_ini_path();
+// `pose`: can-sim's --pose (the joints' angles at power-up), or "" for all at 0; `extra`: more of its options
+// (--backlash JOINT=DEG, --reverse-joint-encoder JOINT).
+inline pid_t start_simulator(const std::string& bus, const std::string& log, const std::string& pose = "",
+                             const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> words = {robogene_bin(), "can-sim", "--bus", bus, "--from", head_ini_path(), "--log", log,
+                                    "--duration", "120"};
+  if (!pose.empty()) words.insert(words.end(), {"--pose", pose});
+  words.insert(words.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
-    if (pose.empty()) {
-      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
-              "--duration", "120", static_cast<char*>(nullptr));
-    } else {
-      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
-              "--duration", "120", "--pose", pose.c_str(), static_cast<char*>(nullptr));
-    }
+    ::execv(argv[0], argv.data());
     ::_exit(127);
   }
   return pid;
