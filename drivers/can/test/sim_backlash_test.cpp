@@ -66,7 +66,9 @@ TEST(SimBacklash, TheStopsHoldTheJointAndTheOutputGoesOnByHalfTheGap) {
 }
 
 TEST(SimBacklash, TheMotorEncoderSeesTheOutputAndTheJointEncoderTheJoint) {
-  testing::Rig rig;  // positions on the motor encoders: measured is the motor's
+  HeadConfig head = testing::head_config();
+  for (auto& j : head.joints) j.joint_correction_limit = 0.0;  // positions on the motor encoders: measured is the motor's
+  testing::Rig rig(head);
   sim::BoardSim& board = rig.board_of(kYaw);
   board.set_backlash(0, 1.0);
   const JointConfig& yaw = rig.head.joints[kYaw];

@@ -112,6 +112,13 @@ void rg_joint_homing_tick(rg_board_t *b) {
   try_home_board(b);
 }
 
+bool rg_joint_homing_position(const rg_board_t *b, unsigned axis, float *counts) {
+  if (coupled(b) || !has_encoder(b, axis) || !ready(b, axis)) return false;
+  const rg_axis_params_t *p = &b->params.axes[axis];
+  *counts = encoder_degrees(b, axis, middle_degrees(p)) * p->counts_per_degree;
+  return true;
+}
+
 bool rg_joint_homing_blocks(const rg_board_t *b, unsigned axis) {
   return has_encoder(b, axis) && !b->axes[axis].joint_homed;
 }
