@@ -52,9 +52,11 @@ void rg_joint_loop_step(rg_board_t *b, unsigned axis, float dt) {
 void rg_joint_loop_follow(rg_board_t *b, unsigned axis) {
   rg_axis_t *a = &b->axes[axis];
   a->joint_error = 0.0f;
-  // Only while the joint is read: with its sensor failed, the correction keeps what the joint last needed.
-  a->joint_correction = a->joint_loop ? (float)(a->motor_position - a->measured) : a->joint_correction;
-  if (!rg_joint_loop_configured(b, axis)) a->joint_correction = 0.0f;
+  if (!rg_joint_loop_configured(b, axis)) {
+    a->joint_correction = 0.0f;
+  } else if (a->joint_loop) {
+    a->joint_correction = (float)(a->motor_position - a->measured);
+  }  // else the sensor failed: the correction keeps what the joint last needed
 }
 
 uint8_t rg_joint_loop_faults(const rg_board_t *b, unsigned axis) {

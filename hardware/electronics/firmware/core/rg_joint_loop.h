@@ -29,8 +29,11 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-// How fast c follows the joint's error: 1/s. A fifth of the inner loops' bandwidth or less (they settle in some
-// tens of ms), so the motor loop has taken up each step of c before the next.
+// How fast c follows the joint's error: 1/s. Near the dead band c then moves at 20 x 0.022 = 0.44 deg/s, slowly enough
+// that the motor loop, which lags its reference by some tens of ms, carries the joint less than a count beyond the
+// point where c stops: the joint comes to rest inside the band instead of overshooting it and turning back across the
+// gap. The price: a joint left a few counts off (the motor loop's own overshoot pushed it there) takes up to a second
+// or two to have the motor cross the gap back.
 #define RG_JOINT_LOOP_GAIN_PER_S 20.0f
 // The fastest c may move, deg/s at the joint: a gap of 1 deg is crossed in 0.1 s, and a runaway reaches a 3 deg
 // limit in no less than 0.3 s of the joint's travel.
