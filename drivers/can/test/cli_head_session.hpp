@@ -65,7 +65,9 @@ struct ChildGuard {
   }
 };
 
-inline void run_head_session(const std::string& bus, const std::string& log_dir) {
+// `sim_options`: more of can-sim's options (--backlash ...), the checks the same.
+inline void run_head_session(const std::string& bus, const std::string& log_dir,
+                             const std::vector<std::string>& sim_options = {}) {
   const std::string sim_log = log_dir + "/can-sim.log", driver_log = log_dir + "/robogene_can.log";
   // The neck and the eye tilt power up away from 0: their boards home them from their joint encoders, so
   // the driver reads this pose from the start (the eyes, homed against stops by can-home, count from 0).
@@ -73,7 +75,7 @@ inline void run_head_session(const std::string& bus, const std::string& log_dir)
                                                             {"eyes_tilt", -10.0}};
   std::string pose_arg;
   for (const auto& [name, deg] : pose) pose_arg += (pose_arg.empty() ? "" : ",") + name + "=" + std::to_string(deg);
-  ChildGuard sim_guard{start_simulator(bus, sim_log, pose_arg)};
+  ChildGuard sim_guard{start_simulator(bus, sim_log, pose_arg, sim_options)};
   const pid_t sim = sim_guard.pid;
   ASSERT_GT(sim, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // let it open the bus

@@ -19,6 +19,16 @@ TEST(CanHeadOverVirtualBus, CanSimProcessAndDriverMoveEveryJoint) {
   testing::run_head_session("virtual:session", dir.path());
 }
 
+// The same session with 1 deg of backlash between each neck and tilt motor and its joint: every move and read of the
+// session works the same (to its 0.2 deg). How close the joints come, as their own sensors read them, is
+// joint_loop_test.cpp's JointLoopCanSim.
+TEST(CanHeadOverVirtualBus, WithBacklashOnTheNeckAndTiltTheDriverReadsTheJointsAtTheirTargets) {
+  testing::TempBusDir dir;
+  testing::run_head_session("virtual:session", dir.path(),
+                            {"--backlash", "neck_pitch=1", "--backlash", "neck_roll=1", "--backlash", "neck_yaw=1",
+                             "--backlash", "eyes_tilt=1"});
+}
+
 // Inside the test VM (make test-can-vm): the same session over the kernel's vcan0, logs kept in
 // ROBOGENE_CAN_LOG_DIR.
 TEST(CanHeadOverSocketCan, CanSimProcessAndDriverMoveEveryJoint) {
