@@ -311,7 +311,8 @@ def test_coupled_eye_joints_get_joint_encoder_bits_when_both_pans_have_one(tree)
     """Not set in the real parameter file (the eyes have no sensor yet): an edited copy with an AS5048A per pan
     gives version and vergence the encoders' bits, which the eye board reads to derive them at start-up."""
     path = tree / "hardware" / "head-parameters.yaml"
-    path.write_text(_with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE))
+    text = _with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE)
+    path.write_text(text.replace("eyes_tilt: 3}", "eyes_tilt: 3, eyes_version: 3, eyes_vergence: 3}"))  # closed on them
     axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
     assert axes["eyes_version"].joint_encoder_bits == 14 and axes["eyes_vergence"].joint_encoder_bits == 14
     assert axes["neck_pitch"].joint_encoder_bits == 14
@@ -615,14 +616,16 @@ def test_a_joint_without_an_encoder_takes_no_correction_limit(tree):
                           "correction limit: it has no joint encoder to close its position on") for e in errs), errs
 
 
-def test_the_eye_board_stays_on_its_motor_encoders_even_with_pan_sensors(tree):
-    """With an AS5048A on each pan (an edited copy) version and vergence home from the sensors but are not closed on
-    them: they need no limit and take none."""
+def test_with_pan_sensors_the_eye_joints_need_their_correction_limit_too(tree):
+    """With an AS5048A on each pan (an edited copy; the real eyes have none) version and vergence are closed on the
+    two sensors like the neck on its own: each needs its limit, and takes it."""
     path = tree / "hardware" / "head-parameters.yaml"
     path.write_text(_with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE))
-    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
-    assert axes["eyes_version"].joint_encoder_bits == 14 and axes["eyes_version"].joint_correction_limit_deg == 0
     errs, _ = _errors(tree, LIMITS_LINE, LIMITS_LINE.replace("eyes_tilt: 3}", "eyes_tilt: 3, eyes_vergence: 2}"))
-    assert any(e.endswith("motor_control.joint_correction_limit_deg.eyes_vergence: eyes_vergence takes no joint "
-                          "correction limit: its board drives it through the eye coupling, whose joints stay on their "
-                          "motor encoders") for e in errs), errs
+    assert any(e.endswith("error: motor_control.joint_correction_limit_deg: eyes_version has a joint encoder, which "
+                          "its board closes the position on: give motor_control.joint_correction_limit_deg.eyes_version "
+                          "(deg)") for e in errs), errs
+    text = path.read_text().replace("eyes_tilt: 3, eyes_vergence: 2}", "eyes_tilt: 3, eyes_version: 1.5, eyes_vergence: 2}")
+    path.write_text(text)
+    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
+    assert axes["eyes_version"].joint_correction_limit_deg == 1.5 and axes["eyes_vergence"].joint_correction_limit_deg == 2

@@ -38,7 +38,8 @@ HOMING_KEYS = ("speed", "pwm", "timeout", "current_limit")
 STOP_KEYS = ("method", "direction", "stops_deg", "back_off_deg")
 HOMING_METHODS = ("absolute_encoder", "hard_stop")
 # motor_control.joint_correction_limit_deg.<joint>: how far (deg at the joint) the board may shift the motor loop's
-# reference to bring a joint onto its encoder's reading before it stops the axis with joint_encoder_mismatch.
+# reference to bring a joint onto its encoder's reading before it stops the axis with joint_encoder_mismatch. Every
+# joint with a joint encoder needs one (the eye joints once both pans have a sensor); no other joint takes one.
 CORRECTION_KEY = "joint_correction_limit_deg"
 # Above this a slipped hub or a reversed sensor would drive the joint further than homing's own check of the
 # encoder's angle tolerates (RG_JOINT_HOMING_RANGE_TOLERANCE_DEG in the firmware).
@@ -544,10 +545,9 @@ class _Reader:
             vergence.homing = Homing(0, stop)
 
     def _joint_correction(self, mc: tuple, axes: dict[str, AxisConfig], boards: list[Board]) -> None:
-        """motor_control.joint_correction_limit_deg: each joint the board closes on its joint encoder (an encoder, on
-        an uncoupled board) needs its limit; no other joint takes one (the eye board's joints stay on their motor
-        encoders even with sensors on both pans)."""
-        closed = {a.joint for b in boards if b.coupling == "none" for a in b.axes if a.joint_encoder_bits}
+        """motor_control.joint_correction_limit_deg: each joint the board closes on its joint encoder needs its limit (on
+        the eye board version and vergence, once both pans have a sensor); no other joint takes one."""
+        closed = {a.joint for b in boards for a in b.axes if a.joint_encoder_bits}
         node = self.get(mc + (CORRECTION_KEY,), dict, "a mapping of joints to degrees") \
             if CORRECTION_KEY in self.pdoc.data["motor_control"] else {}
         for name in node:
@@ -556,9 +556,8 @@ class _Reader:
                 self.fail(path, f"unknown joint (the control joints are {', '.join(axes)})")
                 continue
             if name not in closed:
-                why = "its board drives it through the eye coupling, whose joints stay on their motor encoders" \
-                    if axes[name].joint_encoder_bits else "it has no joint encoder to close its position on"
-                self.fail(path, f"{name} takes no joint correction limit: {why}")
+                self.fail(path, f"{name} takes no joint correction limit: it has no joint encoder to close its "
+                          "position on")
                 continue
             deg = float(self.get(path, float, "a number (deg at the joint)"))
             if not 0 < deg <= CORRECTION_LIMIT_MAX_DEG:

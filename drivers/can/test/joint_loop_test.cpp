@@ -8,6 +8,7 @@
 // lost while running leaves the joint on its motor encoder. Over the bus with the robogene_can driver, and as
 // `robogene can-sim` in its own process with --backlash.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -94,6 +95,74 @@ TEST(JointLoop, OnTheMotorEncodersTheJointStopsOffByTheGap) {
     EXPECT_GT(off, 4 * kStep) << "moved to " << target << ": twice as far off as the joint loop leaves it, at least";
     EXPECT_LE(off, kBacklash / 2 + 1e-9);
   }
+}
+
+// The eye board with an AS5048A on each pan (an edited head; the real eyes have none) and 1 deg of backlash on each
+// pan: version and vergence, derived from the two sensors, are closed on them together, and each eye ends on its
+// target (left = version + vergence / 2, right = version - vergence / 2).
+TEST(JointLoop, TheEyeBoardClosesVersionAndVergenceOnThePanSensors) {
+  constexpr int kVersion = 4, kVergence = 5;
+  for (const double limit : {3.0, 0.0}) {
+    HeadConfig head = testing::head_config();
+    for (const int j : {kVersion, kVergence}) {
+      head.joints[static_cast<std::size_t>(j)].joint_encoder_bits = 14;
+      head.joints[static_cast<std::size_t>(j)].joint_correction_limit = limit;
+    }
+    testing::Rig rig(head);
+    sim::BoardSim& eyes = rig.board_of(kVersion);
+    eyes.set_backlash(0, kBacklash);
+    eyes.set_backlash(1, kBacklash);
+    for (const auto& [version, vergence] : {std::pair{10.0, 4.0}, std::pair{-6.0, 0.0}, std::pair{0.0, 8.0}}) {
+      move(rig, kVergence, vergence, 0.0);
+      move(rig, kVersion, version, 3.0);
+      const double left = eyes.joint_degrees(0), right = eyes.joint_degrees(1);
+      if (limit > 0) {
+        EXPECT_NEAR(left, version + vergence / 2, 2 * kStep) << "left eye, version " << version << ", vergence " << vergence;
+        EXPECT_NEAR(right, version - vergence / 2, 2 * kStep) << "right eye";
+        EXPECT_NEAR(rig.degrees(kVersion), (left + right) / 2, kStep) << "version as the pans' sensors give it";
+      } else {  // on the motor encoders: at least one eye left in its gap, off by several counts
+        EXPECT_GT(std::max(std::fabs(left - version - vergence / 2), std::fabs(right - version + vergence / 2)), 4 * kStep);
+      }
+    }
+    if (limit > 0) {  // and they stay: the eyes and the motors hold still for a second
+      std::array<double, 4> lo{{1e9, 1e9, 1e9, 1e9}}, hi{{-1e9, -1e9, -1e9, -1e9}};
+      for (int i = 0; i < 100; ++i) {
+        rig.run(0.01);
+        const std::array<double, 4> now{{eyes.joint_degrees(0), eyes.joint_degrees(1), eyes.motor_degrees(0), eyes.motor_degrees(1)}};
+        for (std::size_t k = 0; k < 4; ++k) lo[k] = std::min(lo[k], now[k]), hi[k] = std::max(hi[k], now[k]);
+      }
+      EXPECT_LT(hi[0] - lo[0], kStep);
+      EXPECT_LT(hi[1] - lo[1], kStep);
+      EXPECT_LT(hi[2] - lo[2], 0.02) << "the left motor does not cross its gap back and forth";
+      EXPECT_LT(hi[3] - lo[3], 0.02) << "nor the right";
+    }
+    EXPECT_EQ(eyes.mode(0), ControlMode::position);
+    EXPECT_EQ(eyes.mode(1), ControlMode::position);
+  }
+}
+
+// One pan's sensor mounted reversed: version and vergence both run away, and the eye board stops both.
+TEST(JointLoop, AReversedPanSensorStopsBothEyeJoints) {
+  constexpr int kVersion = 4, kVergence = 5;
+  HeadConfig head = testing::head_config();
+  for (const int j : {kVersion, kVergence}) {
+    head.joints[static_cast<std::size_t>(j)].joint_encoder_bits = 14;
+    head.joints[static_cast<std::size_t>(j)].joint_correction_limit = 3.0;
+  }
+  testing::Rig rig(head);
+  sim::BoardSim& eyes = rig.board_of(kVersion);
+  eyes.set_joint_encoder_reversed(0, true);
+  move(rig, kVergence, 0.0, 0.0);  // both running
+  move(rig, kVersion, 15.0, 2.0);
+  EXPECT_EQ(eyes.mode(0), ControlMode::hardware_fault);
+  EXPECT_EQ(eyes.mode(1), ControlMode::hardware_fault);
+  bool both = false;
+  for (const auto& e : rig.broadcasts) {
+    if (const auto* st = std::get_if<StatusBroadcast>(&e.message); st && e.source == 3) {
+      both = both || ((st->faults0 & axis_faults::joint_encoder_mismatch) && (st->faults1 & axis_faults::joint_encoder_mismatch));
+    }
+  }
+  EXPECT_TRUE(both) << "joint_encoder_mismatch on version and vergence";
 }
 
 TEST(JointLoop, AReversedEncoderStopsTheJointWithinItsCorrectionLimit) {

@@ -113,8 +113,15 @@ void rg_joint_homing_tick(rg_board_t *b) {
 }
 
 bool rg_joint_homing_position(const rg_board_t *b, unsigned axis, float *counts) {
-  if (coupled(b) || !has_encoder(b, axis) || !ready(b, axis)) return false;
   const rg_axis_params_t *p = &b->params.axes[axis];
+  if (coupled(b)) {
+    // As homing takes them: version = (left + right) / 2, vergence = left - right, each pan's angle about 0.
+    if (!has_encoder(b, 0) || !has_encoder(b, 1) || !ready(b, 0) || !ready(b, 1)) return false;
+    const float left = encoder_degrees(b, 0, 0.0f), right = encoder_degrees(b, 1, 0.0f);
+    *counts = (axis == 0u ? 0.5f * (left + right) : left - right) * p->counts_per_degree;
+    return true;
+  }
+  if (!has_encoder(b, axis) || !ready(b, axis)) return false;
   *counts = encoder_degrees(b, axis, middle_degrees(p)) * p->counts_per_degree;
   return true;
 }

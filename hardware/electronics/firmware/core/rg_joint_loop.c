@@ -9,10 +9,15 @@
 #include "rg_wire.h"
 #include "generated/robogene_can_motor_control.h"
 
-bool rg_joint_loop_configured(const rg_board_t *b, unsigned axis) {
+static bool closes(const rg_board_t *b, unsigned axis) {
   const rg_axis_params_t *p = &b->params.axes[axis];
-  return b->params.coupling == RG_COUPLING_NONE && b->axes[axis].present && p->joint_encoder_bits > 0u &&
-         p->joint_correction_limit > 0 && b->axes[axis].joint_homed;
+  return b->axes[axis].present && p->joint_encoder_bits > 0u && p->joint_correction_limit > 0 && b->axes[axis].joint_homed;
+}
+
+bool rg_joint_loop_configured(const rg_board_t *b, unsigned axis) {
+  // On the eye board version and vergence both come from both pans' sensors: both closed, or neither.
+  if (b->params.coupling != RG_COUPLING_NONE) return closes(b, 0) && closes(b, 1);
+  return closes(b, axis);
 }
 
 void rg_joint_loop_measure(rg_board_t *b) {
@@ -59,8 +64,13 @@ void rg_joint_loop_follow(rg_board_t *b, unsigned axis) {
   }  // else the sensor failed: the correction keeps what the joint last needed
 }
 
+static bool over_limit(const rg_board_t *b, unsigned axis) {
+  return fabsf(b->axes[axis].joint_correction) > (float)b->params.axes[axis].joint_correction_limit;
+}
+
 uint8_t rg_joint_loop_faults(const rg_board_t *b, unsigned axis) {
   if (!rg_joint_loop_configured(b, axis)) return 0u;
-  const float limit = (float)b->params.axes[axis].joint_correction_limit;
-  return fabsf(b->axes[axis].joint_correction) > limit ? (uint8_t)ROBOGENE_CAN_AXIS_FAULTS_JOINT_ENCODER_MISMATCH : 0u;
+  // On the eye board both motors serve both axes: either axis's mismatch stops both.
+  const bool over = b->params.coupling != RG_COUPLING_NONE ? (over_limit(b, 0) || over_limit(b, 1)) : over_limit(b, axis);
+  return over ? (uint8_t)ROBOGENE_CAN_AXIS_FAULTS_JOINT_ENCODER_MISMATCH : 0u;
 }

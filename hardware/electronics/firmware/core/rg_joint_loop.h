@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: 2026 Robogene contributors
 // SPDX-License-Identifier: BSD-3-Clause
 //
-// The joint loop (docs/firmware.md "The joint loop"): an axis with a joint encoder that homed from it, on an
-// uncoupled board, with a correction limit in its table, has its position closed on the joint. The position PID
+// The joint loop (docs/firmware.md "The joint loop"): an axis with a joint encoder that homed from it, with a
+// correction limit in its table, has its position closed on the joint; on the eye board version and vergence, derived
+// from both pans' encoders, are closed together or not at all. The position PID
 // stays on the motor encoder, the fast inner loop; this outer loop adds a correction c to its reference,
 //
 //   PID error = (trajectory reference + c) - motor position,
@@ -42,7 +43,7 @@
 struct rg_board;
 
 // The axis's position is closed on its joint encoder when its sensor can be read (else it runs on its motor encoder
-// with the correction frozen): an uncoupled board, a joint encoder it homed from, a correction limit.
+// with the correction frozen): a joint encoder it homed from and a correction limit (on the eye board: both axes).
 bool rg_joint_loop_configured(const struct rg_board *b, unsigned axis);
 // Each period, after the encoders and the joint encoders are read: the axis's reported position (measured), its
 // joint's from the sensor, or its motor's less the frozen correction when the sensor fails.
