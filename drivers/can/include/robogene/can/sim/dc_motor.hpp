@@ -66,6 +66,7 @@ class DcMotor {
   double output_degrees() const { return angle_ / p_.gear_ratio * 180.0 / M_PI; }
   // The joint (the load side of the backlash): what a joint encoder sees.
   double joint_degrees() const { return p_.backlash > 0.0 ? joint_ : output_degrees(); }
+  // The gear output's speed (the joint's too, but inside a backlash gap, where the joint stands still).
   double joint_degrees_per_second() const { return speed_ / p_.gear_ratio * 180.0 / M_PI; }
   double current_amps() const { return current_; }
   // Puts output and joint at `deg`, the output in the middle of the gap.
