@@ -311,7 +311,8 @@ def test_coupled_eye_joints_get_joint_encoder_bits_when_both_pans_have_one(tree)
     """Not set in the real parameter file (the eyes have no sensor yet): an edited copy with an AS5048A per pan
     gives version and vergence the encoders' bits, which the eye board reads to derive them at start-up."""
     path = tree / "hardware" / "head-parameters.yaml"
-    path.write_text(_with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE))
+    text = _with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE)
+    path.write_text(text.replace("eyes_tilt: 3}", "eyes_tilt: 3, eyes_version: 3, eyes_vergence: 3}"))  # closed on them
     axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
     assert axes["eyes_version"].joint_encoder_bits == 14 and axes["eyes_vergence"].joint_encoder_bits == 14
     assert axes["neck_pitch"].joint_encoder_bits == 14
@@ -545,7 +546,8 @@ def test_a_brake_travels_to_the_firmware_table(tree):
     _edit(tree, (", bearing: skf-61800-2RS, bearings: 1, brake: spec-brake-23-12V-8mNm}",
                  ", bearing: skf-61800-2RS, bearings: 1}"))
     header = render(tree, ["firmware-can"])["hardware/electronics/firmware/generated/robogene_head_board_config.h"]
-    rows = re.findall(r'\{"(\w+)", -?\d+,.*?(\d)u\}', header, re.S)
+    # has_brake, then the joint correction limit, end each axis's entry
+    rows = re.findall(r'\{"(\w+)", -?\d+,.*?(\d)u, -?\d+\}', header, re.S)
     assert dict(rows) == {"neck_pitch": "1", "neck_roll": "0", "neck_yaw": "0", "eyes_tilt": "0",
                           "eyes_version": "0", "eyes_vergence": "0"}, rows
 
@@ -558,3 +560,72 @@ def test_a_brake_on_a_coupled_eye_motor_is_refused(tree):
                          "encoder: faulhaber-IE2-512-17, brake: spec-brake-23-12V-8mNm}")
     assert any("motor_control.joints.eyes_version: left_eye_pan carries a brake, but a board drives brakes only "
                "on uncoupled axes" in e for e in errs), errs
+
+
+# ---- the joint loop: motor_control.joint_correction_limit_deg ---------------------------------
+
+LIMITS_LINE = "  joint_correction_limit_deg: {neck_pitch: 3, neck_roll: 3, neck_yaw: 3, eyes_tilt: 3}\n"
+
+
+def test_the_joints_closed_on_their_encoders_get_their_correction_limit(tree):
+    """Every joint with a joint encoder on an uncoupled board has its limit, in counts in the firmware's table and in
+    degrees in head.ini; the eye joints have none (0: on their motor encoders)."""
+    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
+    assert {j: a.joint_correction_limit_deg for j, a in axes.items()} == {
+        "neck_pitch": 3, "neck_roll": 3, "neck_yaw": 3, "eyes_tilt": 3, "eyes_version": 0, "eyes_vergence": 0}
+    assert axes["neck_yaw"].joint_correction_limit_counts == round(3 * axes["neck_yaw"].counts_per_degree)
+
+
+def test_the_compiled_table_and_head_ini_carry_the_correction_limit(build_dir, ini):
+    program = build_dir / "print_correction.c"
+    program.write_text('#include <stdio.h>\n#include "robogene_head_board_config.h"\nint main(void) {\n'
+                       '  for (unsigned b = 0; b < ROBOGENE_BOARD_COUNT; ++b) for (unsigned a = 0; a < 2; ++a)\n'
+                       '    printf("%s %d %.9g\\n", robogene_board_configs[b].axes[a].joint,\n'
+                       '           (int)robogene_board_configs[b].axes[a].joint_correction_limit,\n'
+                       '           (double)robogene_board_configs[b].axes[a].counts_per_degree);\n  return 0;\n}\n')
+    exe = build_dir / "print_correction"
+    subprocess.run([CC, "-std=c99", "-Wall", "-Werror", f"-I{FIRMWARE / 'generated'}", str(program), "-o", str(exe)],
+                   check=True, timeout=120)
+    rows = [line.split() for line in subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.splitlines()]
+    table = {name: (int(counts), float(cpd)) for name, counts, cpd in rows}
+    general = ini["GENERAL"]
+    for name, deg in zip(general["axis_names"], general["joint_correction_limit"]):
+        counts, cpd = table[name]
+        assert counts == round(deg * cpd), name
+    assert dict(zip(general["axis_names"], general["joint_correction_limit"]))["neck_pitch"] == 3
+
+
+def test_a_joint_with_an_encoder_needs_its_correction_limit(tree):
+    errs, _ = _errors(tree, LIMITS_LINE, LIMITS_LINE.replace(" neck_yaw: 3,", ""))
+    assert any(e.endswith("error: motor_control.joint_correction_limit_deg: neck_yaw has a joint encoder, which its "
+                          "board closes the position on: give motor_control.joint_correction_limit_deg.neck_yaw (deg)")
+               for e in errs), errs
+
+
+@pytest.mark.parametrize("value", ["0", "-1", "10.5"])
+def test_a_correction_limit_outside_its_range_is_refused(tree, value):
+    errs, text = _errors(tree, LIMITS_LINE, LIMITS_LINE.replace("neck_roll: 3", f"neck_roll: {value}"))
+    assert any(e.startswith(_at(text, "neck_roll: " + value, len("neck_roll: "))) and
+               "motor_control.joint_correction_limit_deg.neck_roll: " in e and "outside 0 (excluded)..10" in e
+               for e in errs), errs
+
+
+def test_a_joint_without_an_encoder_takes_no_correction_limit(tree):
+    errs, _ = _errors(tree, LIMITS_LINE, LIMITS_LINE.replace("eyes_tilt: 3}", "eyes_tilt: 3, eyes_version: 2}"))
+    assert any(e.endswith("error: motor_control.joint_correction_limit_deg.eyes_version: eyes_version takes no joint "
+                          "correction limit: it has no joint encoder to close its position on") for e in errs), errs
+
+
+def test_with_pan_sensors_the_eye_joints_need_their_correction_limit_too(tree):
+    """With an AS5048A on each pan (an edited copy; the real eyes have none) version and vergence are closed on the
+    two sensors like the neck on its own: each needs its limit, and takes it."""
+    path = tree / "hardware" / "head-parameters.yaml"
+    path.write_text(_with_pan_encoder(_with_pan_encoder(path.read_text(), LEFT_DRIVE), RIGHT_DRIVE))
+    errs, _ = _errors(tree, LIMITS_LINE, LIMITS_LINE.replace("eyes_tilt: 3}", "eyes_tilt: 3, eyes_vergence: 2}"))
+    assert any(e.endswith("error: motor_control.joint_correction_limit_deg: eyes_version has a joint encoder, which "
+                          "its board closes the position on: give motor_control.joint_correction_limit_deg.eyes_version "
+                          "(deg)") for e in errs), errs
+    text = path.read_text().replace("eyes_tilt: 3, eyes_vergence: 2}", "eyes_tilt: 3, eyes_version: 1.5, eyes_vergence: 2}")
+    path.write_text(text)
+    axes = {a.joint: a for b in _compile(tree).board_configs[0].boards for a in b.axes if a}
+    assert axes["eyes_version"].joint_correction_limit_deg == 1.5 and axes["eyes_vergence"].joint_correction_limit_deg == 2

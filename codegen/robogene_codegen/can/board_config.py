@@ -37,6 +37,13 @@ HOMING_KEYS = ("speed", "pwm", "timeout", "current_limit")
 # homing.<physical joint> (top level): how the joint finds its zero, the one source of its hard stops.
 STOP_KEYS = ("method", "direction", "stops_deg", "back_off_deg")
 HOMING_METHODS = ("absolute_encoder", "hard_stop")
+# motor_control.joint_correction_limit_deg.<joint>: how far (deg at the joint) the board may shift the motor loop's
+# reference to bring a joint onto its encoder's reading before it stops the axis with joint_encoder_mismatch. Every
+# joint with a joint encoder needs one (the eye joints once both pans have a sensor); no other joint takes one.
+CORRECTION_KEY = "joint_correction_limit_deg"
+# Above this a slipped hub or a reversed sensor would drive the joint further than homing's own check of the
+# encoder's angle tolerates (RG_JOINT_HOMING_RANGE_TOLERANCE_DEG in the firmware).
+CORRECTION_LIMIT_MAX_DEG = 10.0
 
 
 @dataclass
@@ -72,6 +79,13 @@ class AxisConfig:
     current_limit: int          # mA
     homing: Optional[Homing] = None
     has_brake: bool = False     # its one motor carries a power-off holding brake (drives.<joint>.brake)
+    # > 0: the board closes the joint's position on its joint encoder, correcting its motor loop by at most this
+    # (deg at the joint); 0: the joint's position is its motor encoder's
+    joint_correction_limit_deg: float = 0.0
+
+    @property
+    def joint_correction_limit_counts(self) -> int:
+        return round(self.joint_correction_limit_deg * self.counts_per_degree)
 
     @property
     def homing_counts(self) -> dict[str, int]:
@@ -297,6 +311,7 @@ class _Reader:
         self._homing(mc, axes)
         boards = self._boards(mc, axes)
         self._coupled_homing(mc, boards)
+        self._joint_correction(mc, axes, boards)
         data = doc.data
         t = data["timeouts"]
         config = BoardConfig(
@@ -528,6 +543,32 @@ class _Reader:
                 self.fail(("homing", left, "stops_deg"), f"{vergence.joint} reads {stop:g} deg with both eyes at "
                           f"their stops, outside its range {vergence.min_deg:g}..{vergence.max_deg:g}")
             vergence.homing = Homing(0, stop)
+
+    def _joint_correction(self, mc: tuple, axes: dict[str, AxisConfig], boards: list[Board]) -> None:
+        """motor_control.joint_correction_limit_deg: each joint the board closes on its joint encoder needs its limit (on
+        the eye board version and vergence, once both pans have a sensor); no other joint takes one."""
+        closed = {a.joint for b in boards for a in b.axes if a.joint_encoder_bits}
+        node = self.get(mc + (CORRECTION_KEY,), dict, "a mapping of joints to degrees") \
+            if CORRECTION_KEY in self.pdoc.data["motor_control"] else {}
+        for name in node:
+            path = mc + (CORRECTION_KEY, name)
+            if name not in axes:
+                self.fail(path, f"unknown joint (the control joints are {', '.join(axes)})")
+                continue
+            if name not in closed:
+                self.fail(path, f"{name} takes no joint correction limit: it has no joint encoder to close its "
+                          "position on")
+                continue
+            deg = float(self.get(path, float, "a number (deg at the joint)"))
+            if not 0 < deg <= CORRECTION_LIMIT_MAX_DEG:
+                self.fail(path, f"{deg:g} deg is outside 0 (excluded)..{CORRECTION_LIMIT_MAX_DEG:g}: the board "
+                          "corrects its motor loop by at most this before it stops the joint")
+                continue
+            axes[name].joint_correction_limit_deg = deg
+        for name in sorted(closed - set(node), key=lambda j: axes[j].index):
+            self.fail(mc + (CORRECTION_KEY,) if CORRECTION_KEY in self.pdoc.data["motor_control"] else mc,
+                      f"{name} has a joint encoder, which its board closes the position on: give "
+                      f"motor_control.{CORRECTION_KEY}.{name} (deg)")
 
     def _within_drive(self, path: tuple, name: str, max_velocity: float, motors: list[dict]) -> None:
         """A speed limit the drive cannot reach is a typo or a wrong part: the joint's top speed is its motors'

@@ -67,6 +67,11 @@ class CanFlags:
     bits: list[FlagBit]
     mark: Mark
 
+    @property
+    def size(self) -> int:
+        """Bytes on the wire."""
+        return SCALARS[self.scalar][0]
+
 
 @dataclass
 class CanField:

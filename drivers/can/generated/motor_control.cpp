@@ -1836,6 +1836,56 @@ const char* to_string(BootStatus v) {
   return name ? name : "(undefined)";
 }
 
+std::string axis_faults::names(std::uint8_t v) {
+  std::string out;
+  const auto add = [&](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
+  if (v & undervoltage) add("undervoltage");
+  if (v & overvoltage) add("overvoltage");
+  if (v & external) add("external");
+  if (v & overcurrent) add("overcurrent");
+  if (v & absolute_encoder_error) add("absolute_encoder_error");
+  if (v & motor_encoder_drift) add("motor_encoder_drift");
+  if (v & joint_encoder_mismatch) add("joint_encoder_mismatch");
+  const std::uint64_t undefined = static_cast<std::uint64_t>(v) & ~std::uint64_t{0xEFu};
+  if (undefined) add(flags_text(undefined, 1));
+  return out;
+}
+
+std::string can_status::names(std::uint8_t v) {
+  std::string out;
+  const auto add = [&](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
+  if (v & rx_error) add("rx_error");
+  if (v & rx_warning) add("rx_warning");
+  if (v & hardware_overrun) add("hardware_overrun");
+  const std::uint64_t undefined = static_cast<std::uint64_t>(v) & ~std::uint64_t{0x68u};
+  if (undefined) add(flags_text(undefined, 1));
+  return out;
+}
+
+std::string board_flags::names(std::uint8_t v) {
+  std::string out;
+  const auto add = [&](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
+  if (v & control_loop_overrun) add("control_loop_overrun");
+  if (v & i2t_failure) add("i2t_failure");
+  const std::uint64_t undefined = static_cast<std::uint64_t>(v) & ~std::uint64_t{0x21u};
+  if (undefined) add(flags_text(undefined, 1));
+  return out;
+}
+
+std::string broadcast_mask::names(std::uint32_t v) {
+  std::string out;
+  const auto add = [&](const std::string& name) { out += (out.empty() ? "" : ", ") + name; };
+  if (v & position) add("position");
+  if (v & pid_output) add("pid_output");
+  if (v & status) add("status");
+  if (v & current) add("current");
+  if (v & velocity) add("velocity");
+  if (v & supply) add("supply");
+  const std::uint64_t undefined = static_cast<std::uint64_t>(v) & ~std::uint64_t{0x104Fu};
+  if (undefined) add(flags_text(undefined, 4));
+  return out;
+}
+
 std::uint16_t make_id(const CanId& id) {
   if (id.message_class > 7) {
     fail("message_class " + std::to_string(id.message_class) + " does not fit its 3 identifier bits");

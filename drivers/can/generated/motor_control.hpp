@@ -23,9 +23,9 @@ namespace robogene::can {
 
 inline constexpr char kProtocolName[] = "motor_control";
 // First 16 hex digits of the SHA-256 of the protocol's canonical form.
-inline constexpr char kProtocolFingerprint[] = "03c95cd8fdb0f821";
+inline constexpr char kProtocolFingerprint[] = "6db81e2584e457f0";
 inline constexpr std::uint8_t kProtocolMajor = 1;
-inline constexpr std::uint8_t kProtocolMinor = 1;
+inline constexpr std::uint8_t kProtocolMinor = 2;
 inline constexpr std::uint32_t kBitrate = 1000000;  // bit/s
 inline constexpr std::uint8_t kHostAddress = 0;
 inline constexpr std::uint8_t kFirstBoardAddress = 1;
@@ -147,6 +147,9 @@ inline constexpr std::uint8_t external = 0x4u;  // The H-bridge's fault output o
 inline constexpr std::uint8_t overcurrent = 0x8u;
 inline constexpr std::uint8_t absolute_encoder_error = 0x20u;
 inline constexpr std::uint8_t motor_encoder_drift = 0x40u;
+inline constexpr std::uint8_t joint_encoder_mismatch = 0x80u;  // Robogene: an axis closed on its joint encoder needed more correction of its motor-encoder loop than its limit (a joint encoder counting the wrong way, a hub slipping on its shaft); the axis stops.
+// The names of the bits set in `v`, comma-separated ("" for none; an undefined bit as its hex value).
+std::string names(std::uint8_t v);
 }  // namespace axis_faults
 
 // The board's CAN controller state in the status broadcast.
@@ -154,12 +157,16 @@ namespace can_status {
 inline constexpr std::uint8_t rx_error = 0x8u;
 inline constexpr std::uint8_t rx_warning = 0x20u;
 inline constexpr std::uint8_t hardware_overrun = 0x40u;
+// The names of the bits set in `v`, comma-separated ("" for none; an undefined bit as its hex value).
+std::string names(std::uint8_t v);
 }  // namespace can_status
 
 // Board-wide conditions in the status broadcast.
 namespace board_flags {
 inline constexpr std::uint8_t control_loop_overrun = 0x1u;  // Robogene: a 1 ms control step took too long.
 inline constexpr std::uint8_t i2t_failure = 0x20u;
+// The names of the bits set in `v`, comma-separated ("" for none; an undefined bit as its hex value).
+std::string names(std::uint8_t v);
 }  // namespace board_flags
 
 // Which broadcasts a board sends: bit (type - 1) enables broadcast type.
@@ -170,6 +177,8 @@ inline constexpr std::uint32_t status = 0x4u;  // Faults and control modes; also
 inline constexpr std::uint32_t current = 0x8u;  // Both motors' currents.
 inline constexpr std::uint32_t velocity = 0x40u;  // Both axes' measured speeds and accelerations.
 inline constexpr std::uint32_t supply = 0x1000u;  // Robogene: the motor supply voltage the board measures.
+// The names of the bits set in `v`, comma-separated ("" for none; an undefined bit as its hex value).
+std::string names(std::uint32_t v);
 }  // namespace broadcast_mask
 
 // Command codes (the low 7 bits of a command byte) and broadcast types (the low identifier bits).

@@ -187,6 +187,10 @@ HeadConfig read_head_config(const Searchable& config) {
   // AS5048As (14 bits); 0 is none.
   const auto joint_encoder_bits =
       general.has("joint_encoder_bits") ? general.ints("joint_encoder_bits", count, 0, 14) : std::vector<int>(count, 0);
+  // joint_correction_limit is optional: without it every joint's position is its motor encoder's.
+  const auto joint_correction =
+      general.has("joint_correction_limit") ? general.numbers("joint_correction_limit", count, 0, 360)
+                                             : std::vector<double>(count, 0.0);
   head.pwm_full_scale = general.integer("pwm_full_scale", 1, 32767);
   head.control_period_us = general.integer("control_period_us", 100, 100000);
 
@@ -251,6 +255,11 @@ HeadConfig read_head_config(const Searchable& config) {
     if (jc.joint_encoder_bits != 0 && jc.joint_encoder_bits != 14) {
       general.fail("joint_encoder_bits", "joint " + jc.name + ": " + std::to_string(jc.joint_encoder_bits) +
                                              " bits; the boards read AS5048A joint encoders (14 bits) or none (0)");
+    }
+    jc.joint_correction_limit = joint_correction[j];
+    if (jc.joint_correction_limit > 0 && jc.joint_encoder_bits == 0) {
+      general.fail("joint_correction_limit", "joint " + jc.name + ": " + Group::text(jc.joint_correction_limit) +
+                                                 " deg, but it has no joint encoder to close its position on");
     }
     jc.min = min[j];
     jc.max = max[j];

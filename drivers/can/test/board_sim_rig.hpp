@@ -18,12 +18,13 @@ namespace robogene::can::testing {
 
 // Every board of the generated head.ini, at power-up, with the head's broadcast policy set.
 struct Rig {
-  HeadConfig head = head_config();
+  HeadConfig head;
   std::vector<sim::BoardSim> boards;
   double t = 0.0;
   std::vector<Envelope> broadcasts;
 
-  Rig() {
+  // `config`: the head to simulate, by default the generated head.ini's (an edited copy for a variant).
+  explicit Rig(HeadConfig config = head_config()) : head(std::move(config)) {
     for (const auto& b : head.boards) boards.emplace_back(head, b, sim::MotorParameters{});
     for (const auto& b : head.boards) {
       for (int axis = 0; axis < 2; ++axis) {
@@ -59,6 +60,11 @@ struct Rig {
       t += 0.001;
       for (auto& b : boards) b.step(t, 0.001, broadcasts);
     }
+  }
+  // The joint's true angle (beyond any backlash), from the simulated hardware.
+  double true_degrees(int joint) {
+    const JointConfig& j = head.joints[static_cast<std::size_t>(joint)];
+    return board_of(joint).joint_degrees(j.axis);
   }
   double degrees(int joint) {
     const JointConfig& j = head.joints[static_cast<std::size_t>(joint)];

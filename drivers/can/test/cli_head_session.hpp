@@ -35,19 +35,20 @@ inline std::string robogene_bin() {
 }
 
 // Starts `robogene can-sim`; the caller stops it with SIGTERM.
-// `pose`: can-sim's --pose (the joints' angles at power-up), or "" for all at 0.
-inline pid_t start_simulator(const std::string& bus, const std::string& log, const std::string& pose = "") {
-  const std::string bin = robogene_bin();
-  const std::string ini = head_ini_path();
+// `pose`: can-sim's --pose (the joints' angles at power-up), or "" for all at 0; `extra`: more of its options
+// (--backlash JOINT=DEG, --reverse-joint-encoder JOINT).
+inline pid_t start_simulator(const std::string& bus, const std::string& log, const std::string& pose = "",
+                             const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> words = {robogene_bin(), "can-sim", "--bus", bus, "--from", head_ini_path(), "--log", log,
+                                    "--duration", "120"};
+  if (!pose.empty()) words.insert(words.end(), {"--pose", pose});
+  words.insert(words.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
-    if (pose.empty()) {
-      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
-              "--duration", "120", static_cast<char*>(nullptr));
-    } else {
-      ::execl(bin.c_str(), bin.c_str(), "can-sim", "--bus", bus.c_str(), "--from", ini.c_str(), "--log", log.c_str(),
-              "--duration", "120", "--pose", pose.c_str(), static_cast<char*>(nullptr));
-    }
+    ::execv(argv[0], argv.data());
     ::_exit(127);
   }
   return pid;
@@ -64,7 +65,9 @@ struct ChildGuard {
   }
 };
 
-inline void run_head_session(const std::string& bus, const std::string& log_dir) {
+// `sim_options`: more of can-sim's options (--backlash ...), the checks the same.
+inline void run_head_session(const std::string& bus, const std::string& log_dir,
+                             const std::vector<std::string>& sim_options = {}) {
   const std::string sim_log = log_dir + "/can-sim.log", driver_log = log_dir + "/robogene_can.log";
   // The neck and the eye tilt power up away from 0: their boards home them from their joint encoders, so
   // the driver reads this pose from the start (the eyes, homed against stops by can-home, count from 0).
@@ -72,7 +75,7 @@ inline void run_head_session(const std::string& bus, const std::string& log_dir)
                                                             {"eyes_tilt", -10.0}};
   std::string pose_arg;
   for (const auto& [name, deg] : pose) pose_arg += (pose_arg.empty() ? "" : ",") + name + "=" + std::to_string(deg);
-  ChildGuard sim_guard{start_simulator(bus, sim_log, pose_arg)};
+  ChildGuard sim_guard{start_simulator(bus, sim_log, pose_arg, sim_options)};
   const pid_t sim = sim_guard.pid;
   ASSERT_GT(sim, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // let it open the bus

@@ -56,7 +56,7 @@ TEST_F(Flashing, AnUpdateWritesTheImageVerifiesItAndTheBoardRunsItsApplicationAg
   EXPECT_FALSE(id->in_bootloader);
   EXPECT_EQ(id->board_id, kEyes);
   ASSERT_GE(log.size(), 5u);
-  EXPECT_EQ(log.front(), "found board 3, revision " + std::string(1, board_revision()) + " at address 3, running firmware 2.1");
+  EXPECT_EQ(log.front(), "found board 3, revision " + std::string(1, board_revision()) + " at address 3, running firmware 2.2");
   EXPECT_EQ(log[1], "restarting board 3 into its bootloader");
   EXPECT_NE(log.back().find("started: board 3"), std::string::npos) << log.back();
   // The new image starts at the next power-up too: it checks.

@@ -13,9 +13,13 @@
 #include <ctime>
 #include <map>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 #include "robogene/can/logging_bus.hpp"
+#include "robogene/can/sim/motor_place.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
 #include "robogene/can/virtual_bus.hpp"
 #include "robogene/dev/property.hpp"
@@ -85,6 +89,33 @@ std::map<int, std::array<double, 2>> parse_pose(const std::string& text, const c
   return boards;
 }
 
+// --backlash MOTOR=DEG: the dead band (deg at the joint) between that motor's gear output and its joint.
+std::pair<can::sim::MotorPlace, double> parse_backlash(const std::string& text, const can::HeadConfig& head) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos) throw UsageError("--backlash " + text + ": expected JOINT=DEG");
+  can::sim::MotorPlace place;
+  try {
+    place = can::sim::motor_place(head, text.substr(0, eq));
+  } catch (const Error& e) {
+    throw UsageError("--backlash " + text + ": " + e.what());
+  }
+  const std::string value = text.substr(eq + 1);
+  char* stop = nullptr;
+  const double deg = std::strtod(value.c_str(), &stop);
+  if (value.empty() || *stop != '\0' || !std::isfinite(deg) || deg < 0.0) {
+    throw UsageError("--backlash " + text + ": '" + value + "' is not a width in degrees >= 0");
+  }
+  return {place, deg};
+}
+
+can::sim::MotorPlace parse_reversed(const std::string& text, const can::HeadConfig& head) {
+  try {
+    return can::sim::motor_place(head, text);
+  } catch (const Error& e) {
+    throw UsageError("--reverse-joint-encoder " + text + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 int cmd_can_sim(Args& args) {
@@ -94,6 +125,9 @@ int cmd_can_sim(Args& args) {
   const auto duration = args.option("--duration");
   const auto flash_dir = args.option("--flash-dir");
   const auto pose = args.option("--pose");
+  std::vector<std::string> backlash_texts, reversed_texts;
+  while (auto v = args.option("--backlash")) backlash_texts.push_back(*v);
+  while (auto v = args.option("--reverse-joint-encoder")) reversed_texts.push_back(*v);
   if (!args.positional().empty()) throw UsageError("unexpected argument " + args.positional()[0]);
   if (!bus_spec) throw UsageError("--bus is required (virtual:NAME or socketcan:IFACE)");
   if (!from) throw UsageError("--from is required (the head's board config, e.g. drivers/can/generated/head.ini)");
@@ -112,8 +146,14 @@ int cmd_can_sim(Args& args) {
   std::unique_ptr<can::Bus> bus = can::open_bus(*bus_spec);
   if (log_path) bus = std::make_unique<can::LoggingBus>(std::move(bus), std::make_shared<can::CandumpWriter>(*log_path));
   const auto posed = pose ? parse_pose(*pose, head) : std::map<int, std::array<double, 2>>{};
+  std::vector<std::pair<can::sim::MotorPlace, double>> backlash;
+  for (const auto& t : backlash_texts) backlash.push_back(parse_backlash(t, head));
+  std::vector<can::sim::MotorPlace> reversed;
+  for (const auto& t : reversed_texts) reversed.push_back(parse_reversed(t, head));
   can::sim::SimulatedHead sim(head, std::move(bus), {}, flash_dir.value_or(""));
   for (const auto& [address, motors] : posed) sim.power_up_at(address, motors[0], motors[1]);
+  for (const auto& [place, deg] : backlash) sim.set_backlash(place.board, place.motor, deg);
+  for (const auto& place : reversed) sim.set_joint_encoder_reversed(place.board, place.motor, true);
   std::string boards;
   for (const auto& b : head.boards) {
     boards += (boards.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.address) +
@@ -123,9 +163,12 @@ int cmd_can_sim(Args& args) {
   for (const auto& j : head.joints) {
     if (j.has_brake) brakes += (brakes.empty() ? "" : ", ") + j.name;
   }
-  std::printf("can-sim: %zu boards (%s) on %s; holding brakes: %s (each change logged at ROBOGENE_LOG=info)%s\n",
+  std::string extras;
+  for (std::size_t i = 0; i < backlash.size(); ++i) extras += "; backlash " + backlash_texts[i] + " deg";
+  for (const auto& t : reversed_texts) extras += "; " + t + "'s joint encoder reversed";
+  std::printf("can-sim: %zu boards (%s) on %s; holding brakes: %s (each change logged at ROBOGENE_LOG=info)%s%s\n",
               head.boards.size(), boards.c_str(), bus_spec->c_str(), brakes.empty() ? "none" : brakes.c_str(),
-              seconds < 0 ? "; Ctrl-C stops" : "");
+              extras.c_str(), seconds < 0 ? "; Ctrl-C stops" : "");
   std::fflush(stdout);
   wait_for_signal_or(seconds);
   sim.stop();

@@ -49,7 +49,7 @@ const Command kCommands[] = {
      "list registered ports with their connections and carriers", robogene::cli::cmd_ls},
     {"dev", "robogene dev --device NAME [--name /prefix] [--from FILE.ini] [--subdevice NAME] [--axes N] [--period S] [--single_port] [--KEY VALUE...] [--server HOST:PORT]",
      "open a device and serve it on the network until Ctrl-C (the paper's yarpdev)", robogene::cli::cmd_dev},
-    {"can-sim", "robogene can-sim --bus virtual:NAME|socketcan:IFACE --from head.ini [--log FILE.log] [--duration S] [--flash-dir DIR] [--pose JOINT=DEG,...]",
+    {"can-sim", "robogene can-sim --bus virtual:NAME|socketcan:IFACE --from head.ini [--log FILE.log] [--duration S] [--flash-dir DIR] [--pose JOINT=DEG,...] [--backlash JOINT=DEG]... [--reverse-joint-encoder JOINT]...",
      "simulate the head's CAN boards on a bus until Ctrl-C (drive them with --device robogene_can)",
      robogene::cli::cmd_can_sim},
     {"can-home", "robogene can-home --bus virtual:NAME|socketcan:IFACE --from head.ini [JOINT...]",

@@ -70,7 +70,12 @@ void BoardLink::take(const Envelope& e) {
   } else if (const auto* st = std::get_if<StatusBroadcast>(&e.message)) {
     s.mode = {st->mode0, st->mode1};
     if ((st->faults0 | st->faults1) && (st->faults0 != s.faults[0] || st->faults1 != s.faults[1])) {
-      log::error(bus_name_, "board " + std::to_string(e.source) + " reports faults: " + to_text(e));
+      std::string named;
+      for (int axis = 0; axis < 2; ++axis) {
+        const std::uint8_t f = axis == 0 ? st->faults0 : st->faults1;
+        if (f) named += " axis " + std::to_string(axis) + ": " + axis_faults::names(f) + ";";
+      }
+      log::error(bus_name_, "board " + std::to_string(e.source) + " reports faults:" + named + " " + to_text(e));
     }
     s.faults = {st->faults0, st->faults1};
     s.status_time = now;

@@ -73,6 +73,20 @@ void RobogeneCan::require_homed(int j) {
   commanded_mode_[static_cast<std::size_t>(j)] = ControlMode::not_configured;
 }
 
+// A board that stopped a joint on a fault ignores moves until the host sends force_idle: say so, naming the faults,
+// rather than send moves that do nothing.
+void RobogeneCan::require_not_stopped(int j) {
+  const JointConfig& jc = joint(j);
+  const BoardLink::BoardState s = link_->state(jc.board);
+  const auto axis = static_cast<std::size_t>(jc.axis);
+  if (!s.status_time || s.mode[axis] != ControlMode::hardware_fault) return;
+  // The broadcast may predate a force_idle just sent: the board's own answer decides.
+  if (std::get<GetControlModeReply>(request(j, GetControlMode{}).message).mode != ControlMode::hardware_fault) return;
+  const std::string faults = axis_faults::names(s.faults[axis]);
+  throw Error("joint " + jc.name + " was stopped by board " + std::to_string(jc.board) + " (hardware_fault: " +
+              (faults.empty() ? "no fault bit" : faults) + "); setControlMode force_idle clears it");
+}
+
 JointEncoderReading RobogeneCan::joint_encoder(int j) { return read_joint_encoder(*link_, head_, joint(j)); }
 
 JointEncoderReading RobogeneCan::store_joint_encoder_zero(int j, std::uint16_t zero) {
@@ -87,6 +101,7 @@ JointEncoderReading RobogeneCan::store_joint_encoder_zero(int j, std::uint16_t z
 
 void RobogeneCan::ensure_mode(int j, ControlMode mode) {
   require_homed(j);
+  require_not_stopped(j);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (commanded_mode_[static_cast<std::size_t>(j)] == mode) return;

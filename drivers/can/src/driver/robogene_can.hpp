@@ -134,6 +134,7 @@ class RobogeneCan final : public dev::DeviceDriver,
   Envelope request(int j, const Message& m);
   void ensure_mode(int j, ControlMode mode);
   // A joint with a joint encoder runs only once its board has homed it from it; throws naming why not.
+  void require_not_stopped(int j);
   void require_homed(int j);
   double speed_counts(int j, double deg_per_s) const;
   double acceleration_counts(int j, double deg_per_s2) const;

@@ -40,6 +40,8 @@ struct BoardSim::Model {
   std::array<std::uint16_t, 2> magnet{{0, 0}};
   std::array<JointEncoderFault, 2> joint_fault{{JointEncoderFault::none, JointEncoderFault::none}};
   std::array<std::optional<std::uint16_t>, 2> stored_zero;
+  // A sensor (or its magnet's board) mounted the other way: it counts down as its joint turns up.
+  std::array<bool, 2> joint_reversed{{false, false}};
   std::uint64_t periods = 0;
   rg_board_params_t params{};  // kept for a simulated power-up
   double pwm_full_scale = 1.0;
@@ -64,7 +66,8 @@ Model& model_of(void* ctx) { return *static_cast<Model*>(ctx); }
 
 std::uint16_t encoder_raw(void* ctx, unsigned m) {
   const Model& s = model_of(ctx);
-  const double counts = std::round(s.motors[m].joint_degrees() * s.motor_counts_per_degree[m]);
+  // The motor encoder sees the gear's output, this side of any backlash.
+  const double counts = std::round(s.motors[m].output_degrees() * s.motor_counts_per_degree[m]);
   // The timer's 16-bit counter: the core extends it, as on the board.
   return static_cast<std::uint16_t>(static_cast<std::int64_t>(counts) & 0xFFFF);
 }
@@ -79,12 +82,14 @@ std::uint32_t supply_mv(void* ctx) {
 
 bool bridge_fault(void* ctx) { return model_of(ctx).bridge_fault; }
 
-// The AS5048A facing the joint's magnet: 14 bits a turn, counting up with the joint angle.
+// The AS5048A facing the joint's magnet: 14 bits a turn, counting up with the joint angle (down when
+// mounted reversed). It reads the joint, the far side of any backlash.
 std::uint16_t joint_encoder_frame(void* ctx, unsigned axis) {
   const Model& s = model_of(ctx);
   const JointEncoderFault fault = s.joint_fault[axis];
   if (fault == JointEncoderFault::missing) return 0x0000;
-  const long steps = std::lround(s.motors[axis].joint_degrees() * 16384.0 / 360.0) + s.magnet[axis];
+  const double joint = s.motors[axis].joint_degrees() * (s.joint_reversed[axis] ? -1.0 : 1.0);
+  const long steps = std::lround(joint * 16384.0 / 360.0) + s.magnet[axis];
   const auto raw = static_cast<std::uint16_t>(((steps % 16384) + 16384) % 16384);
   const std::uint16_t frame = rg_as5048a_frame(raw, fault == JointEncoderFault::error_flag);
   return fault == JointEncoderFault::bad_parity ? static_cast<std::uint16_t>(frame ^ 0x0004u) : frame;
@@ -279,7 +284,18 @@ void BoardSim::step(double /*now*/, double dt, std::vector<Envelope>& out) {
   for (const auto& f : s.sent) out.push_back(decode(from_core(f)));
 }
 
-double BoardSim::motor_degrees(int m) const { return model_->motors[static_cast<std::size_t>(m)].joint_degrees(); }
+double BoardSim::motor_degrees(int m) const { return model_->motors[static_cast<std::size_t>(m)].output_degrees(); }
+double BoardSim::joint_degrees(int m) const { return model_->motors[static_cast<std::size_t>(m & 1)].joint_degrees(); }
+void BoardSim::set_backlash(int m, double degrees) {
+  if (!(degrees >= 0.0) || !std::isfinite(degrees)) {
+    throw Error("simulated board " + std::to_string(address()) + " motor " + std::to_string(m & 1) + ": backlash " +
+                std::to_string(degrees) + " deg is not a width >= 0");
+  }
+  model_->motors[static_cast<std::size_t>(m & 1)].set_backlash(degrees);
+}
+void BoardSim::set_joint_encoder_reversed(int axis, bool reversed) {
+  model_->joint_reversed[static_cast<std::size_t>(axis & 1)] = reversed;
+}
 std::int32_t BoardSim::measured_counts(int axis) const { return model_->core.axes[axis & 1].measured; }
 ControlMode BoardSim::mode(int axis) const { return static_cast<ControlMode>(model_->core.axes[axis & 1].mode); }
 void BoardSim::set_supply_voltage(double volts) {

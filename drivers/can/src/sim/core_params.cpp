@@ -27,6 +27,7 @@ rg_axis_params_t axis_params(const JointConfig& jc) {
   p.has_brake = jc.has_brake;
   p.counts_per_degree = static_cast<float>(jc.counts_per_degree);
   p.joint_encoder_bits = static_cast<std::uint8_t>(jc.joint_encoder_bits);
+  p.joint_correction_limit = static_cast<std::int32_t>(std::lround(jc.joint_correction_limit * jc.counts_per_degree));
   p.pid.kp = fit_i16(jc.pid.kp, jc.name + " kp");
   p.pid.ki = fit_i16(jc.pid.ki, jc.name + " ki");
   p.pid.kd = fit_i16(jc.pid.kd, jc.name + " kd");

@@ -110,6 +110,21 @@ std::optional<std::uint16_t> SimulatedHead::stored_joint_zero(int address, int a
   return board(address).stored_joint_zero(axis);
 }
 
+void SimulatedHead::set_backlash(int address, int motor, double degrees) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).set_backlash(motor, degrees);
+}
+
+void SimulatedHead::set_joint_encoder_reversed(int address, int axis, bool reversed) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  board(address).set_joint_encoder_reversed(axis, reversed);
+}
+
+double SimulatedHead::joint_degrees(int address, int motor) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return board(address).joint_degrees(motor);
+}
+
 void SimulatedHead::power_cycle(int address) {
   std::lock_guard<std::mutex> lock(mutex_);
   board(address).power_cycle();

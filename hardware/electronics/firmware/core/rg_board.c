@@ -7,6 +7,7 @@
 
 #include "rg_broadcasts.h"
 #include "rg_joint_homing.h"
+#include "rg_joint_loop.h"
 #include "rg_wire.h"
 #include "generated/robogene_can_motor_control.h"
 
@@ -28,10 +29,11 @@ static void read_encoders(rg_board_t *b, bool first) {
       // Low-pass filtered differences (10 ms), the speed a board can estimate from counts.
       const float alpha = 0.1f;
       const float previous = a->speed;
-      a->speed += alpha * ((float)(counts - a->measured) / dt - a->speed);
+      a->speed += alpha * ((float)(counts - a->motor_position) / dt - a->speed);
       a->accel += alpha * ((a->speed - previous) / dt - a->accel);
     }
-    a->measured = counts;
+    a->motor_position = counts;
+    a->measured = counts;  // an axis closed on its joint encoder takes the joint's (rg_joint_loop_measure)
   }
 }
 
@@ -70,13 +72,18 @@ void rg_board_init(rg_board_t *b, const rg_board_params_t *params, const rg_hal_
   }
   for (unsigned m = 0; m < 2u; ++m) b->motors[m].active_limit_ma = b->motors[m].current_limit_ma;
   read_encoders(b, true);
-  for (unsigned i = 0; i < 2u; ++i) rg_trajectory_hold(&b->axes[i].traj, (float)b->axes[i].measured);
   rg_joint_homing_init(b);
+  rg_joint_loop_measure(b);
+  for (unsigned i = 0; i < 2u; ++i) {
+    rg_trajectory_hold(&b->axes[i].traj, (float)b->axes[i].measured);
+    rg_joint_loop_follow(b, i);
+  }
 }
 
 void rg_board_set_mode(rg_board_t *b, unsigned axis, uint8_t mode) {
   rg_axis_t *a = &b->axes[axis];
   rg_trajectory_hold(&a->traj, (float)a->measured);
+  rg_joint_loop_follow(b, axis);
   a->velocity_command = 0.0f;
   rg_pid_reset(&a->pid_state);
   a->output = 0;
@@ -88,6 +95,7 @@ void rg_board_shift_position(rg_board_t *b, unsigned axis, int32_t position) {
   rg_axis_t *a = &b->axes[axis];
   const int32_t shift = position - a->measured;
   a->offset += shift;
+  a->motor_position += shift;
   a->measured += shift;
   a->traj.ref += (float)shift;
   a->traj.target += (float)shift;
@@ -124,8 +132,8 @@ static void check_faults(rg_board_t *b) {
     const bool coupled = b->params.coupling != RG_COUPLING_NONE;
     const uint8_t over = coupled ? motor_faults : (b->motors[i].overcurrent_periods >= RG_OVERCURRENT_PERIODS
                                                        ? ROBOGENE_CAN_AXIS_FAULTS_OVERCURRENT : 0u);
-    const uint8_t now = (uint8_t)(board_faults | over);
-    // The joint encoder is reported, but stops nothing: a homed axis's loop runs on the motor encoder.
+    const uint8_t now = (uint8_t)(board_faults | over | rg_joint_loop_faults(b, i));
+    // The joint encoder's own faults are reported, but stop nothing: the axis goes on on its motor encoder.
     const uint8_t reported = (uint8_t)(now | rg_joint_homing_faults(b, i));
     if (a->mode == ROBOGENE_CAN_CONTROL_MODE_HARDWARE_FAULT) {
       a->faults |= reported;  // latched until force_idle
@@ -156,10 +164,14 @@ static int16_t control(rg_board_t *b, unsigned axis, float dt) {
       return rg_homing_step(b, axis, dt);
     default:  // idle, faults, not configured: follow the axis so that a switch to a loop is smooth
       rg_trajectory_hold(&a->traj, (float)a->measured);
+      rg_joint_loop_follow(b, axis);
       rg_pid_reset(&a->pid_state);
       return 0;
   }
-  return rg_pid_step(&a->pid, &a->pid_state, a->traj.ref - (float)a->measured, a->pid.output_limit);
+  // The motor loop, its reference shifted by the joint loop's correction (0 on an axis not closed on its joint).
+  rg_joint_loop_step(b, axis, dt);
+  const float error = a->traj.ref + a->joint_correction - (float)a->motor_position;
+  return rg_pid_step(&a->pid, &a->pid_state, error, a->pid.output_limit);
 }
 
 // The limit a motor's current is held to this period: its run limit, or while an axis it drives seeks
@@ -241,6 +253,7 @@ void rg_board_tick(rg_board_t *b) {
   const float dt = rg_board_period_s(b);
   read_encoders(b, false);
   rg_joint_homing_tick(b);
+  rg_joint_loop_measure(b);
   check_faults(b);
   for (unsigned i = 0; i < 2u; ++i) {
     rg_axis_t *a = &b->axes[i];

@@ -28,7 +28,7 @@ enum { RG_COUPLING_NONE = 0, RG_COUPLING_VERSION_VERGENCE = 1 };  // robogene_co
 
 // Firmware identity in the get_firmware_version reply.
 #define RG_FIRMWARE_VERSION 2u
-#define RG_FIRMWARE_REVISION 1u  // 2.1: the joint encoders read, protocol 1.1
+#define RG_FIRMWARE_REVISION 2u  // 2.2: positions closed on the joint encoders, protocol 1.2
 #define RG_FIRMWARE_BUILD 0u
 
 // Supply window outside which the bridges stay off (mV): the drivers' 12 V rail.
@@ -52,6 +52,9 @@ typedef struct {
   uint8_t joint_encoder_bits;
   bool joint_zero_stored;
   uint16_t joint_zero;
+  // > 0: the axis's position is closed on its joint encoder (rg_joint_loop.h), the motor loop's reference corrected
+  // by at most this many counts before joint_encoder_mismatch stops it; 0: the motor encoder's position is the axis's.
+  int32_t joint_correction_limit;
   rg_pid_gains_t pid;
   rg_homing_config_t homing;
 } rg_axis_params_t;
@@ -81,7 +84,9 @@ typedef struct {
   rg_pid_state_t pid_state;
   int16_t output;                // PWM steps, before mixing to the motors
   int32_t offset;                // counts added by set_encoder_position and homing
-  int32_t measured;              // counts
+  int32_t motor_position;        // counts from the motor encoder(s), offset added: what the position PID runs on
+  int32_t measured;              // counts, the axis's position as reported: its joint encoder's when closed on it
+                                 // (rg_joint_loop.h), else motor_position
   float speed, accel;            // filtered, counts/s and counts/s^2
   rg_homing_config_t homing_config;
   rg_homing_t homing;
@@ -90,6 +95,12 @@ typedef struct {
   rg_joint_encoder_t joint_encoder;
   bool joint_homed;
   bool joint_out_of_range;       // the encoder's angle, less the zero, lies outside the joint's range
+  // The joint loop (rg_joint_loop.h): closed on the joint encoder this period, the joint's position from it, the
+  // correction added to the motor loop's reference, and the joint's last error (counts).
+  bool joint_loop;
+  float joint_position;
+  float joint_correction;
+  float joint_error;
 } rg_axis_t;
 
 typedef struct {

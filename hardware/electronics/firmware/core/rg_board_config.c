@@ -16,6 +16,7 @@ static void axis_from_config(const robogene_axis_config_t *c, rg_axis_params_t *
   p->has_brake = c->has_brake != 0u;
   p->counts_per_degree = c->counts_per_degree;
   p->joint_encoder_bits = c->joint_encoder_bits;
+  p->joint_correction_limit = c->joint_correction_limit;
   p->pid.kp = c->kp;
   p->pid.ki = c->ki;
   p->pid.kd = c->kd;

@@ -112,6 +112,20 @@ void rg_joint_homing_tick(rg_board_t *b) {
   try_home_board(b);
 }
 
+bool rg_joint_homing_position(const rg_board_t *b, unsigned axis, float *counts) {
+  const rg_axis_params_t *p = &b->params.axes[axis];
+  if (coupled(b)) {
+    // As homing takes them: version = (left + right) / 2, vergence = left - right, each pan's angle about 0.
+    if (!has_encoder(b, 0) || !has_encoder(b, 1) || !ready(b, 0) || !ready(b, 1)) return false;
+    const float left = encoder_degrees(b, 0, 0.0f), right = encoder_degrees(b, 1, 0.0f);
+    *counts = (axis == 0u ? 0.5f * (left + right) : left - right) * p->counts_per_degree;
+    return true;
+  }
+  if (!has_encoder(b, axis) || !ready(b, axis)) return false;
+  *counts = encoder_degrees(b, axis, middle_degrees(p)) * p->counts_per_degree;
+  return true;
+}
+
 bool rg_joint_homing_blocks(const rg_board_t *b, unsigned axis) {
   return has_encoder(b, axis) && !b->axes[axis].joint_homed;
 }

@@ -14,8 +14,9 @@
 // so a working encoder homes its axis before the first control period. An encoder that is absent or
 // failing, no stored zero, or an angle more than RG_JOINT_HOMING_RANGE_TOLERANCE_DEG outside the
 // joint's limits (a wrong zero, a slipped magnet) leave the axis unhomed: never a guessed zero. The
-// encoder keeps being read every period; its faults are reported in the axis's status
-// (absolute_encoder_error) but do not stop a homed axis, whose loop runs on the motor encoder.
+// encoder keeps being read every period: a homed axis with a correction limit closes its position on it (rg_joint_loop.h);
+// its faults are reported in the axis's status (absolute_encoder_error) but do not stop a homed axis, which goes on
+// on its motor encoder.
 #ifndef RG_JOINT_HOMING_H
 #define RG_JOINT_HOMING_H
 
@@ -32,6 +33,9 @@ void rg_joint_homing_init(struct rg_board *b);
 void rg_joint_homing_tick(struct rg_board *b);
 // The axis has a joint encoder and has not yet taken its position from it: no control mode is accepted.
 bool rg_joint_homing_blocks(const struct rg_board *b, unsigned axis);
+// The joint's position from its encoder now (axis counts, as homing takes it; on the eye board version or vergence
+// from both pans' encoders) when the encoder(s) are trusted and have a stored zero; false otherwise.
+bool rg_joint_homing_position(const struct rg_board *b, unsigned axis, float *counts);
 // The fault bits (ROBOGENE_CAN_AXIS_FAULTS_*) the joint encoder adds to the axis's status now.
 uint8_t rg_joint_homing_faults(const struct rg_board *b, unsigned axis);
 // set_joint_encoder_zero: stores `zero` (and saves it through the HAL), then homes the axis again from

@@ -8,6 +8,7 @@
 
 #include "rg_board.h"
 #include "rg_joint_homing.h"
+#include "rg_joint_loop.h"
 #include "rg_wire.h"
 #include "generated/robogene_can_motor_control.h"
 
@@ -169,6 +170,9 @@ static void execute(const command_t *c, unsigned code) {
       break;
     }
     case ROBOGENE_CAN_CMD_SET_ENCODER_POSITION:
+      // An axis closed on its joint encoder has the joint's position, whose zero is the stored one
+      // (set_joint_encoder_zero): shifting its motor's counts would only be taken for a mismatch.
+      if (rg_joint_loop_configured(b, c->axis)) break;
       rg_board_shift_position(b, c->axis, rg_get_i32(d + ROBOGENE_CAN_SET_ENCODER_POSITION_POSITION_BYTE));
       break;
     case ROBOGENE_CAN_CMD_STOP_TRAJECTORY:

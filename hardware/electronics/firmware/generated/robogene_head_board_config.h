@@ -55,6 +55,10 @@ typedef struct {
   // 1: the axis's motor has a power-off holding brake on the board's brake output of its bridge (drives.<joint>.brake);
   // 0: the firmware never drives that output.
   uint8_t has_brake;
+  // > 0: the axis's position is closed on its joint encoder, the motor-encoder loop's reference corrected by at most
+  // this many counts before the axis stops with joint_encoder_mismatch (motor_control.joint_correction_limit_deg);
+  // 0: the axis's position is its motor encoder's.
+  int32_t joint_correction_limit;
 } robogene_axis_config_t;
 
 typedef struct {
@@ -75,12 +79,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       170, 1, 1700, 8u, 0, 900, 300,
       375.46666666666664f, 512u, 14u,
       0, 0, 0, 0, 0, 0u, 0,
-      1u},
+      1u, 1126},
      {"neck_roll", -27989, 27989, 209920, 1000,
       46, 1, 460, 8u, 0, 900, 300,
       1399.4666666666667f, 512u, 14u,
       0, 0, 0, 0, 0, 0u, 0,
-      1u}
+      1u, 4198}
    }},
   {"neck-yaw-eyes-tilt", 2u, ROBOGENE_COUPLING_NONE,
    {{1, 0}, {0, 1}},
@@ -90,12 +94,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       66, 1, 660, 8u, 0, 900, 300,
       536.3809523809524f, 512u, 14u,
       0, 0, 0, 0, 0, 0u, 0,
-      0u},
+      0u, 1609},
      {"eyes_tilt", -12581, 12581, 62903, 620,
       114, 1, 1140, 8u, 0, 900, 300,
       419.35238095238094f, 512u, 14u,
       0, 0, 0, 0, 0, 0u, 0,
-      0u}
+      0u, 1258}
    }},
   {"eyes-pan", 3u, ROBOGENE_COUPLING_VERSION_VERGENCE,
    {{1, 1}, {1, -1}},
@@ -105,12 +109,12 @@ static const robogene_board_config_t robogene_board_configs[ROBOGENE_BOARD_COUNT
       130, 1, 1300, 8u, 0, 900, 300,
       489.24444444444447f, 512u, 0u,
       1, 27642, 4892, 250, 13943, 20000u, 100,
-      0u},
+      0u, 0},
      {"eyes_vergence", 0, 11008, 97849, 600,
       260, 1, 2600, 8u, 0, 900, 300,
       244.62222222222223f, 512u, 0u,
       0, 0, 0, 0, 0, 0u, 0,
-      0u}
+      0u, 0}
    }}
 };
 

@@ -46,6 +46,9 @@ struct JointConfig {
   double current_limit = 0;       // mA
   bool has_brake = false;         // its motor has a power-off holding brake on the board's brake output
   int joint_encoder_bits = 0;     // its absolute joint encoder's bits (0: none): the board homes it from it
+  // > 0: its board closes its position on the joint encoder, correcting the motor loop by at most this (deg at the
+  // joint) before it stops it with joint_encoder_mismatch; 0: its position is its motor encoder's
+  double joint_correction_limit = 0;
   PidGains pid;
   HomingConfig homing;
 };

@@ -20,9 +20,9 @@ __all__ = ["AXIS_BIT", "AxisFaults", "BITRATE", "BROADCAST_ADDRESS", "BoardFlags
 
 PROTOCOL_NAME = "motor_control"
 # First 16 hex digits of the SHA-256 of the protocol's canonical form.
-PROTOCOL_FINGERPRINT = "03c95cd8fdb0f821"
+PROTOCOL_FINGERPRINT = "6db81e2584e457f0"
 PROTOCOL_MAJOR = 1
-PROTOCOL_MINOR = 1
+PROTOCOL_MINOR = 2
 BITRATE = 1000000  # bit/s
 HOST_ADDRESS = 0
 FIRST_BOARD_ADDRESS = 1
@@ -142,6 +142,7 @@ class AxisFaults(enum.IntFlag):
     OVERCURRENT = 0x8
     ABSOLUTE_ENCODER_ERROR = 0x20
     MOTOR_ENCODER_DRIFT = 0x40
+    JOINT_ENCODER_MISMATCH = 0x80  # Robogene: an axis closed on its joint encoder needed more correction of its motor-encoder loop than its limit (a joint encoder counting the wrong way, a hub slipping on its shaft); the axis stops.
 
 
 class CanStatus(enum.IntFlag):

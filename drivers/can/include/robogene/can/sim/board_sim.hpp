@@ -61,9 +61,19 @@ class BoardSim {
   // dt must be the head's control period: the firmware counts its time in periods.
   void step(double now, double dt, std::vector<Envelope>& out);
 
-  // For tests: the joint-side angle of motor m (degrees), an axis's measured counts and mode,
-  // and conditions of the board's hardware.
+  // For tests: the angle of motor m's gear output (motor / reduction, degrees: what its encoder sees), an
+  // axis's measured counts and mode, and conditions of the board's hardware.
   double motor_degrees(int m) const;
+  // The joint motor m drives (degrees), beyond the backlash: what its joint encoder reads. Without
+  // backlash it is motor_degrees(m).
+  double joint_degrees(int m) const;
+  // A dead band of `degrees` at the joint between motor m's gear output and its joint (DcMotor): the
+  // joint follows the output only when a flank pushes it. 0 (the default): none. Set now, the joint
+  // is where the output is, in the middle of the gap. Throws for a negative width.
+  void set_backlash(int m, double degrees);
+  // Joint encoder `axis` mounted the other way round: it counts down as its joint turns up (its stored
+  // zero still reads 0 deg at the joint's 0, as a lab would have measured it).
+  void set_joint_encoder_reversed(int axis, bool reversed);
   std::int32_t measured_counts(int axis) const;
   ControlMode mode(int axis) const;
   void set_supply_voltage(double volts);

@@ -50,6 +50,11 @@ class SimulatedHead {
   void set_joint_encoder_fault(int board, int axis, JointEncoderFault fault);
   void set_stored_joint_zero(int board, int axis, std::optional<std::uint16_t> zero);
   std::optional<std::uint16_t> stored_joint_zero(int board, int axis);
+  // Backlash between a board's motor and its joint, a joint encoder mounted reversed, and the joint's
+  // angle beyond the backlash (BoardSim::set_backlash, set_joint_encoder_reversed, joint_degrees).
+  void set_backlash(int board, int motor, double degrees);
+  void set_joint_encoder_reversed(int board, int axis, bool reversed);
+  double joint_degrees(int board, int motor);
   // Control periods run so far, and how many frames were not commands the boards understood.
   std::uint64_t ticks() const { return ticks_; }
   std::uint64_t rejected_frames() const { return rejected_; }
