@@ -18,7 +18,9 @@ A floating bearing must let its sliding ring move (the ring whose fit's mean is 
 each way, where L is its distance from the fixed bearing along the axis, alpha dT the growth of an aluminium shaft
 `temperature_difference` warmer than its aluminium housing, and t(L) the ISO 2768-m tolerance of a length L (the
 drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
-A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces).
+A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces), and
+so must a shim that bears on a ring (shim_faces): a shim beside a sealed or shielded bearing locates the ring it
+touches, never the seal or shield between the rings.
 Per joint: the joints under gearhead_fixed have the gearhead's own (preloaded) output bearings as their fixed
 bearing, which counts when the gearhead's axis is the shaft's: every ball bearing there must float. The joints under
 cross_located have two bearings each locating one way, in opposite directions. Every other joint, and every
@@ -49,7 +51,8 @@ class BearingArrangementError(RuntimeError):
 class Side:
     gap: float | None     # mm from the ring's face to its stop; None: no stop within the search length
     stop: str             # the stop's part name ("" when none)
-    through: tuple = ()   # the shims between the ring and its stop
+    through: tuple = ()   # the shims between the ring and its stop, the ring's neighbour first
+    shim_gap: float | None = None   # mm from the ring's face to the first of them
 
 
 @dataclass(frozen=True)
@@ -61,6 +64,18 @@ class Ring:
     mean_clearance: float  # mm, negative: interference
     minus: Side           # towards -axis (the bearing's axis, see BearingState.axis)
     plus: Side
+
+
+@dataclass(frozen=True)
+class ShimFace:
+    """A shim that bears on a bearing's ring, and the part of that ring's face it may cover."""
+    shim: str             # part name
+    design: str           # catalogue key
+    ring: str             # "inner" or "outer"
+    bore: float           # mm, the shim's
+    outside: float
+    face: tuple           # (inside, outside) mm: the ring's face, between its bore or outside and its seal or shield
+    ok: bool
 
 
 @dataclass
@@ -76,6 +91,7 @@ class BearingState:
     outer: Ring
     span: float | None = None          # mm along the axis from the joint's fixed bearing (floating bearings)
     required: float | None = None      # mm of room each way the sliding ring needs
+    shims: list = field(default_factory=list)   # ShimFace: the shims that bear on its rings (shim_faces)
 
     def ring(self, name: str) -> Ring:
         return self.inner if name == "inner" else self.outer
@@ -166,7 +182,7 @@ class _Probe:
         """The nearest stop of a ring among `candidates` beyond the ring's face towards sign * z, through shims."""
         face = self.width if sign > 0 else 0.0
         end = face + sign * self.search
-        free, skip, shims = 0.0, set(skip), []
+        free, skip, shims, first = 0.0, set(skip), [], None
         while (end - face) * sign > 1e-9:
             z0, z1 = sorted((face, end))
             probe = geom.tube("z", 2 * radii[1], 2 * radii[0], z0, z1)
@@ -188,15 +204,17 @@ class _Probe:
                 if best is None or gap < best[0]:
                     best = (gap, part, far)
             if best is None:
-                return Side(None, "")
+                return Side(None, "", tuple(shims), first)
             gap, part, far = best
             if not self._is_shim(part):
-                return Side(round(free + gap, 4), part.name, tuple(shims))
+                return Side(round(free + gap, 4), part.name, tuple(shims), first)
+            if first is None:
+                first = round(gap, 4)
             free += gap           # a shim is pushed by whatever pushes it: its free room counts, its thickness not
             face = far
             skip.add(part.name)
             shims.append(part.name)
-        return Side(None, "")
+        return Side(None, "", tuple(shims), first)
 
 
 def _joint_of(params: HeadParameters, a: str, b: str) -> str | None:
@@ -314,6 +332,48 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
     return problems
 
 
+def _face_edges(item) -> tuple[float, float]:
+    """(inner ring's face outside, outer ring's face inside) in mm: where a bearing's seal or shield begins."""
+    inside = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
+        (item.num("bore") + item.num("outside")) / 2
+    return item.num("inner_ring_outside", positive=True), inside
+
+
+def shim_faces(params: HeadParameters, b: BearingState, by_name: dict, located: float) -> list[str]:
+    """A shim that bears on a bearing's ring (the first of a stack, within located_within of the ring's face) must bear
+    on that ring alone: beside the inner ring, its outside within the inner ring's face (inner_ring_outside, the maker's
+    d1); beside the outer ring, its bore outside the outer ring's face's inner edge (outer_ring_inside, the maker's D2,
+    else the pitch circle). Beyond that edge it lies on the seal or shield, which is fixed to the outer ring: a shim
+    standing with one ring rubs it as the other turns, and one clamped on it presses it onto the balls' cage.
+    Records each shim on b.shims; returns the problems."""
+    problems = []
+    item = params.purchased(b.key)
+    inner_face, outer_face = _face_edges(item)
+    for ring in (b.inner, b.outer):
+        for side in (ring.minus, ring.plus):
+            if not side.through or side.shim_gap is None or side.shim_gap > located:
+                continue
+            part = by_name[side.through[0]]
+            shim = params.purchased(part.design)
+            bore, outside = shim.num("bore", positive=True), shim.num("outside", positive=True)
+            if ring.ring == "inner":
+                face, ok = (item.num("bore"), inner_face), outside <= inner_face + 1e-9
+            else:
+                face, ok = (outer_face, item.num("outside")), bore >= outer_face - 1e-9
+            b.shims.append(ShimFace(part.name, part.design, ring.ring, bore, outside, face, ok))
+            if ok:
+                continue
+            if ring.ring == "inner":
+                problems.append(f"{b.joint}: {part.name} ({part.design}, {outside:g} across) bears on {b.bearing}'s "
+                                f"inner ring, whose face is {inner_face:g} across ({b.key}): it reaches over the seal or "
+                                f"shield; take a shim no more than {inner_face:g} across")
+            else:
+                problems.append(f"{b.joint}: {part.name} ({part.design}, its bore {bore:g}) bears on {b.bearing}'s "
+                                f"outer ring, whose face starts at {outer_face:g} ({b.key}): it reaches in over the seal "
+                                f"or shield; take a shim with a bore of at least {outer_face:g}")
+    return problems
+
+
 def analyse(params: HeadParameters, parts: list) -> Report:
     node = _node(params)
     located = node.num("located_within", positive=True)
@@ -355,6 +415,7 @@ def analyse(params: HeadParameters, parts: list) -> Report:
         result = JointResult(joint, "", "", bearings)
         for b in bearings:
             result.problems += ring_faces(params, b, by_name, located)
+            result.problems += shim_faces(params, b, by_name, located)
         fixed = [b for b in bearings if b.role == "fixed"]
         one_way = [b for b in bearings if b.role == "one way"]
         floating = [b for b in bearings if b.role == "floating"]
@@ -404,7 +465,14 @@ def analyse(params: HeadParameters, parts: list) -> Report:
 
 
 def _side_text(side: Side, search: float) -> str:
-    return f"free over {search:g} mm" if side.gap is None else f"{side.gap:.2f} mm to {side.stop}"
+    text = f"free over {search:g} mm" if side.gap is None else f"{side.gap:.2f} mm to {side.stop}"
+    return text + (f" (through {', '.join(side.through)})" if side.through else "")
+
+
+def _shim_text(s: ShimFace) -> str:
+    verdict = "bears on the ring alone" if s.ok else "reaches over the seal or shield"
+    return f"    shim {s.shim} ({s.design}, {s.bore:g} x {s.outside:g}) on the {s.ring} ring, whose face is " \
+           f"{s.face[0]:g} to {s.face[1]:g} across: {verdict}"
 
 
 def format_report(report: Report) -> str:
@@ -424,6 +492,7 @@ def format_report(report: Report) -> str:
                       f"{abs(r.mean_clearance) * 1000:.1f} um)"
                 lines.append(f"    {r.ring} ring on {r.seat}, {fit}: towards {_direction(-axis)} "
                              f"{_side_text(r.minus, report.search)}; towards {_direction(axis)} {_side_text(r.plus, report.search)}")
+            lines += [_shim_text(s) for s in b.shims]
         for p in j.problems:
             lines.append(f"  PROBLEM {p}")
     for p in report.problems:
