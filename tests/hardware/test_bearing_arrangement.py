@@ -12,11 +12,12 @@ import numpy as np
 import pytest
 
 from robogene_head import bearing_arrangement as arrangement
-from robogene_head import geom, kinematics
+from robogene_head import geom, kinematics, thermal_growth
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck, purchased
 from robogene_head.parts.base import Part, loc
 
 from param_variants import edited
+from robogene_head_model.params import ParameterError
 
 
 def _parts(params):
@@ -64,8 +65,47 @@ def test_the_61800s_float_on_their_outer_rings(report, name, seat):
     assert b.outer.seat == seat and b.outer.tolerance == "H7" and b.outer.slides
     for side in (b.outer.minus, b.outer.plus):
         assert side.gap is None or side.gap >= b.required
-    # room each way: aluminium growth over the span at 20 K plus ISO 2768-m on the span (30..120 mm: 0.3)
-    assert b.required == pytest.approx(23.1e-6 * 20 * b.span + 0.3, abs=1e-3)
+    # room each way: an aluminium stage 20 K warmer than its aluminium housing over the span plus ISO 2768-m on the span
+    # (30..120 mm: 0.3); warming both together grows nothing against the other
+    assert b.required == pytest.approx(23.4e-6 * 20 * b.span + 0.3, abs=1e-3)
+    assert b.growth == "aluminium-6082 shaft in aluminium-6082 housing, shaft 20 K warmer governs"
+
+
+@pytest.mark.parametrize("joint", ["neck_yaw_jackshaft", "eyes_tilt_jackshaft"])
+def test_a_steel_jackshaft_floats_by_its_own_growth(report, joint):
+    """The jackshafts are steel in aluminium housings: as both warm the housing grows away from the shaft, by more than
+    the shaft 20 K warmer grows (11.6 against 23.4 um/m/K, 40 K): that case governs."""
+    b = _bearing(report, f"{joint}_bearing_floating")
+    assert b.growth == "steel shaft in aluminium-6082 housing, both warmed 40 K governs"
+    assert b.required == pytest.approx((23.4e-6 - 11.6e-6) * 40 * b.span + 0.2, abs=1e-3)
+
+
+def test_the_worst_thermal_case_by_material(params):
+    same = thermal_growth.differential(params, ("s", "aluminium-6082"), ("h", "aluminium-6082"), 100)
+    assert same.governs == "shaft 20 K warmer" and same.mm == pytest.approx(23.4e-6 * 20 * 100)
+    assert [mm for _, mm in same.cases][1] == 0
+    steel = thermal_growth.differential(params, ("s", "steel"), ("h", "aluminium-6082"), 100)
+    assert [round(mm, 6) for _, mm in steel.cases] == [0.0232, -0.0472, -0.024]
+    assert steel.governs == "both warmed 40 K" and steel.mm == pytest.approx(0.0472)
+    with pytest.raises(ParameterError, match=r"bearing_arrangement\.expansion: no coefficient for 'petg-printed', the "
+                                             r"material of s"):
+        thermal_growth.differential(params, ("s", "petg-printed"), ("h", "aluminium-6082"), 100)
+
+
+def test_a_steel_jackshaft_without_room_for_its_own_growth_fails(tmp_path):
+    """A head that warms 120 K and a yaw jackshaft whose floating ring has 0.205 mm to the land: an aluminium shaft
+    20 K warmer than its housing (the old rule, whatever the shaft) would need 0.204 mm; the steel shaft in its
+    aluminium housing, both warmed, needs 0.212."""
+    def edit(d):
+        d["bearing_arrangement"]["temperature_rise"] = 120
+        d["geometry"]["yaw_jackshaft"]["float_room"] = 0.205
+    params = edited(tmp_path, edit)
+    report = arrangement.analyse(params, _parts(params))
+    [failure] = report.failures
+    assert failure.startswith("neck_yaw_jackshaft: neck_yaw_jackshaft_bearing_floating must float, but its outer ring "
+                              "(H7, the sliding one) has 0.20 mm of room towards -z to neck_yaw_jackshaft_housing: it "
+                              "needs 0.21 mm (0.012 of growth over 8.5 mm, steel shaft in aluminium-6082 housing, both "
+                              "warmed 120 K governs, + 0.2 ISO 2768-m)"), failure
 
 
 def test_the_tilt_has_a_fixed_and_a_floating_626(report):

@@ -14,10 +14,11 @@ it. A ring is located on a side when its stop is within bearing_arrangement.loca
   the housing holds its outer ring on the +axis face; likewise towards -axis. Both ways: a fixed bearing. One way:
   a bearing that locates one way (a cross-located pair is two of them, facing each other). Neither: floating.
 A floating bearing must let its sliding ring move (the ring whose fit's mean is a clearance, fits.slides) at least
-  alpha dT L + t(L)
-each way, where L is its distance from the fixed bearing along the axis, alpha dT the growth of an aluminium shaft
-`temperature_difference` warmer than its aluminium housing, and t(L) the ISO 2768-m tolerance of a length L (the
-drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
+  g(L) + t(L)
+each way, where L is its distance from the fixed bearing along the axis, g(L) the shaft's growth against its housing
+over L in the worst of thermal_growth's cases, from the shaft's (the journal's) and the housing's own materials, and
+t(L) the ISO 2768-m tolerance of a length L (the drawings' general tolerance, which places the seats), and its tight
+ring must sit against a shoulder.
 A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces), and
 so must a shim that bears on a ring (shim_faces): a shim beside a sealed or shielded bearing locates the ring it
 touches, never the seal or shield between the rings.
@@ -34,7 +35,7 @@ import numpy as np
 
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
 
-from . import fits, geom, jackshafts, kinematics
+from . import fits, geom, jackshafts, kinematics, thermal_growth
 from .geom import exact_bounds, location
 
 EDGE = 0.05        # mm the probe keeps inside a ring's face, off the seat's own cylinder
@@ -91,6 +92,7 @@ class BearingState:
     outer: Ring
     span: float | None = None          # mm along the axis from the joint's fixed bearing (floating bearings)
     required: float | None = None      # mm of room each way the sliding ring needs
+    growth: str = ""                   # the materials and the thermal case that governs `required`
     shims: list = field(default_factory=list)   # ShimFace: the shims that bear on its rings (shim_faces)
 
     def ring(self, name: str) -> Ring:
@@ -142,12 +144,13 @@ def general_tolerance(length: float) -> float:
     raise ValueError(f"a length of {length:g} mm is outside ISO 2768-m's table (0.5 to 1000 mm)")
 
 
-def required_float(params: HeadParameters, span: float) -> tuple[float, float, float]:
-    """(room each way, thermal growth, tolerance) in mm for a floating bearing `span` mm from the fixed one."""
-    node = _node(params)
-    growth = node.num("expansion", positive=True) * node.num("temperature_difference", positive=True) * span
+def required_float(params: HeadParameters, span: float, shaft: tuple[str, str], housing: tuple[str, str]) \
+        -> tuple[float, thermal_growth.Growth, float]:
+    """(room each way, thermal growth, tolerance) in mm for a floating bearing `span` mm from the fixed one, its shaft
+    and housing given as (part name, material)."""
+    growth = thermal_growth.differential(params, shaft, housing, span)
     tol = general_tolerance(span)
-    return growth + tol, growth, tol
+    return growth.mm + tol, growth, tol
 
 
 def _annulus(params: HeadParameters, key: str, ring: str) -> tuple[float, float]:
@@ -275,12 +278,14 @@ def _gearhead_on_axis(params, parts_by_name, poses, joint, bearing: BearingState
     return gear.name, frame[:3, 3]
 
 
-def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located: float) -> list[str]:
+def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located: float, by_name: dict) -> list[str]:
     problems = []
     axis = np.array(b.axis)
     b.span = round(abs(float(np.dot(np.array(b.centre) - fixed_at, axis))), 2)
-    need, growth, tol = required_float(params, b.span)
+    shaft, housing = by_name[seat.journal], by_name[seat.housing]
+    need, growth, tol = required_float(params, b.span, (shaft.name, shaft.material), (housing.name, housing.material))
     b.required = round(need, 3)
+    b.growth = f"{growth.shaft} shaft in {growth.housing} housing, {growth.governs} governs"
     sliding = b.ring(seat.sliding_ring)
     tight = b.ring(seat.tight_ring)
     where = f"{b.joint}: {b.bearing}"
@@ -292,8 +297,7 @@ def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located
             direction = _direction(axis if label == "+axis" else -axis)
             problems.append(f"{where} must float, but its {sliding.ring} ring ({sliding.tolerance}, the sliding one) has "
                             f"{side.gap:.2f} mm of room towards {direction} to {side.stop}: it needs {need:.2f} mm "
-                            f"({growth:.3f} of growth over {b.span:g} mm at {_node(params).num('temperature_difference'):g} K "
-                            f"+ {tol:g} ISO 2768-m)")
+                            f"({growth.mm:.3f} of growth over {b.span:g} mm, {b.growth}, + {tol:g} ISO 2768-m)")
     if not any(side.gap is not None and side.gap <= located for side in (tight.minus, tight.plus)):
         problems.append(f"{where}: its tight {tight.ring} ring ({tight.tolerance}) sits against no shoulder")
     return problems
@@ -443,7 +447,7 @@ def analyse(params: HeadParameters, parts: list) -> Report:
                                        f"bearings (the fixed bearing): they fight; it must float")
             if gear:
                 for b in floating:
-                    result.problems += _check_floating(params, b, gear[1], seats[b.bearing], located)
+                    result.problems += _check_floating(params, b, gear[1], seats[b.bearing], located, by_name)
         else:
             result.arrangement = "fixed + floating"
             result.fixed = " + ".join(b.bearing for b in fixed)
@@ -459,7 +463,8 @@ def analyse(params: HeadParameters, parts: list) -> Report:
                                        f"fixed bearing: it must float")
             if len(fixed) == 1:
                 for b in floating:
-                    result.problems += _check_floating(params, b, np.array(fixed[0].centre), seats[b.bearing], located)
+                    result.problems += _check_floating(params, b, np.array(fixed[0].centre), seats[b.bearing], located,
+                                                       by_name)
         joints.append(result)
     return Report(located, search, joints, problems)
 
@@ -482,7 +487,7 @@ def format_report(report: Report) -> str:
         lines.append(f"{j.joint}: {j.arrangement}; fixed: {j.fixed or 'none'}" + ("  FAIL" if j.problems else ""))
         for b in j.bearings:
             axis = np.array(b.axis)
-            extra = f", {b.span:g} mm from the fixed bearing, needs {b.required:.2f} mm each way" \
+            extra = f", {b.span:g} mm from the fixed bearing, needs {b.required:.2f} mm each way ({b.growth})" \
                 if b.required is not None else ""
             stops = f", stops the shaft towards " + " and ".join(
                 _direction(axis if s == "+axis" else -axis) for s in b.stops_shaft) if b.stops_shaft else ""
