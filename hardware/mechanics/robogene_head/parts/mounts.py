@@ -193,13 +193,13 @@ def joint_set_screw(params: HeadParameters, hub: Node | None = None) -> str:
     key = node.text("set_screw")
     screw = params.purchased(key)
     if screw.text("kind") != "set_screw":
-        raise node._fail("set_screw", f"{key!r} is a {screw.text('kind')}, expected a set_screw")
+        raise node.fail("set_screw", f"{key!r} is a {screw.text('kind')}, expected a set_screw")
     wall = node.num("wall", positive=True)
     if screw.num("length", positive=True) > wall:
-        raise node._fail("wall", f"{wall:g} is shorter than the {key} set screw ({screw.num('length'):g}), which "
+        raise node.fail("wall", f"{wall:g} is shorter than the {key} set screw ({screw.num('length'):g}), which "
                                  f"would stand out of the hub")
     if screw.num("diameter", positive=True) >= joint_hub_length(params, hub):
-        raise node._fail("length", f"{joint_hub_length(params, hub):g} leaves no metal around the {key} set "
+        raise node.fail("length", f"{joint_hub_length(params, hub):g} leaves no metal around the {key} set "
                                    f"screw's thread")
     return key
 
@@ -211,7 +211,7 @@ def set_screw_angles(params: HeadParameters, joint: str, hub: Node | None = None
     node, key = (joint_hub(params).node("set_screw_angles"), BELTED[joint]) if hub is None else (hub, "set_screw_angles")
     value = node.raw(key)
     if not isinstance(value, list) or not value:
-        raise node._fail(key, f"expected a list of angles (deg), got {value!r}")
+        raise node.fail(key, f"expected a list of angles (deg), got {value!r}")
     return list(node.vec(key, len(value)))
 
 
@@ -227,7 +227,7 @@ def flat_depth(params: HeadParameters, bore: float, hub: Node | None = None) -> 
     depth = node.num("flat_depth", positive=True)
     screw = params.purchased(joint_set_screw(params, hub)).num("diameter", positive=True)
     if depth >= bore / 2 or 2 * math.sqrt(bore * bore / 4 - (bore / 2 - depth) ** 2) < screw:
-        raise node._fail("flat_depth", f"{depth:g} on a {bore:g} mm shaft does not make a flat as wide as the "
+        raise node.fail("flat_depth", f"{depth:g} on a {bore:g} mm shaft does not make a flat as wide as the "
                                        f"M{screw:g} set screw")
     return depth
 
