@@ -327,8 +327,7 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
                                     f"onto its shield or seal; put a spacer between them or take a smaller ring")
             else:
                 inside = fitted.num("lug_inner_diameter", positive=True)
-                edge = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
-                    (item.num("bore") + item.num("outside")) / 2
+                edge = _face_edges(item)[1]
                 if inside < edge - 1e-9:
                     problems.append(f"{b.joint}: {stop.name} ({stop.design}, its lugs in to {inside:g} as fitted) bears on "
                                     f"{b.bearing}'s outer ring, whose face starts at {edge:g} ({b.key}): it reaches "
