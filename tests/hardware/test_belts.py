@@ -86,7 +86,7 @@ def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path
     assert (yaw.xlen, yaw.zlen) == (pytest.approx(20 * 5.08 / math.pi - 0.508 + 2 * 2.93), pytest.approx(14.3))
     assert mounts.belts(params) == [("xl-belt-35T", "neck_yaw", 35), ("xl-belt-53T", "eyes_tilt", 53)]
     mxl = edited(tmp_path, lambda data: data["geometry"]["pulleys"]["yaw"].update(
-        belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5))
+        belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5, flange_thickness=0.6))
     small = mounts.pulley(mxl, "neck_yaw", 14, 4).BoundingBox()
     assert (small.xlen, small.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
     old = edited(tmp_path, lambda data: data["geometry"]["head"]["tilt_motor"].update(x=-35, z=85))
