@@ -4,18 +4,20 @@
 present design passes (pitch and roll float their 61800s against the gearheads' output bearings, the tilt has its
 fixed and its floating 626, yaw its cross-located pair); the check fails, naming the joint and the bearing, on a 61800
 clamped again in its housing, a floating ring with no room, both 626 fixed, a tilt without a fixed bearing, a gearhead
-off the shaft's axis and a floating ring with a tight fit."""
+off the shaft's axis, a floating ring with a tight fit, and a shim that reaches over a bearing's seal or shield (the
+yaw's old DIN 988 15 x 21 shims on the 61802s' inner rings; a shim with too small a bore on the tilt's outer ring)."""
 import json
 
 import numpy as np
 import pytest
 
 from robogene_head import bearing_arrangement as arrangement
-from robogene_head import geom, kinematics
+from robogene_head import geom, kinematics, thermal_growth
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck, purchased
 from robogene_head.parts.base import Part, loc
 
 from param_variants import edited
+from robogene_head_model.params import ParameterError
 
 
 def _parts(params):
@@ -63,8 +65,47 @@ def test_the_61800s_float_on_their_outer_rings(report, name, seat):
     assert b.outer.seat == seat and b.outer.tolerance == "H7" and b.outer.slides
     for side in (b.outer.minus, b.outer.plus):
         assert side.gap is None or side.gap >= b.required
-    # room each way: aluminium growth over the span at 20 K plus ISO 2768-m on the span (30..120 mm: 0.3)
-    assert b.required == pytest.approx(23.1e-6 * 20 * b.span + 0.3, abs=1e-3)
+    # room each way: an aluminium stage 20 K warmer than its aluminium housing over the span plus ISO 2768-m on the span
+    # (30..120 mm: 0.3); warming both together grows nothing against the other
+    assert b.required == pytest.approx(23.4e-6 * 20 * b.span + 0.3, abs=1e-3)
+    assert b.growth == "aluminium-6082 shaft in aluminium-6082 housing, shaft 20 K warmer governs"
+
+
+@pytest.mark.parametrize("joint", ["neck_yaw_jackshaft", "eyes_tilt_jackshaft"])
+def test_a_steel_jackshaft_floats_by_its_own_growth(report, joint):
+    """The jackshafts are steel in aluminium housings: as both warm the housing grows away from the shaft, by more than
+    the shaft 20 K warmer grows (11.6 against 23.4 um/m/K, 40 K): that case governs."""
+    b = _bearing(report, f"{joint}_bearing_floating")
+    assert b.growth == "steel shaft in aluminium-6082 housing, both warmed 40 K governs"
+    assert b.required == pytest.approx((23.4e-6 - 11.6e-6) * 40 * b.span + 0.2, abs=1e-3)
+
+
+def test_the_worst_thermal_case_by_material(params):
+    same = thermal_growth.differential(params, ("s", "aluminium-6082"), ("h", "aluminium-6082"), 100)
+    assert same.governs == "shaft 20 K warmer" and same.mm == pytest.approx(23.4e-6 * 20 * 100)
+    assert [mm for _, mm in same.cases][1] == 0
+    steel = thermal_growth.differential(params, ("s", "steel"), ("h", "aluminium-6082"), 100)
+    assert [round(mm, 6) for _, mm in steel.cases] == [0.0232, -0.0472, -0.024]
+    assert steel.governs == "both warmed 40 K" and steel.mm == pytest.approx(0.0472)
+    with pytest.raises(ParameterError, match=r"bearing_arrangement\.expansion: no coefficient for 'petg-printed', the "
+                                             r"material of s"):
+        thermal_growth.differential(params, ("s", "petg-printed"), ("h", "aluminium-6082"), 100)
+
+
+def test_a_steel_jackshaft_without_room_for_its_own_growth_fails(tmp_path):
+    """A head that warms 120 K and a yaw jackshaft whose floating ring has 0.205 mm to the land: an aluminium shaft
+    20 K warmer than its housing (the old rule, whatever the shaft) would need 0.204 mm; the steel shaft in its
+    aluminium housing, both warmed, needs 0.212."""
+    def edit(d):
+        d["bearing_arrangement"]["temperature_rise"] = 120
+        d["geometry"]["yaw_jackshaft"]["float_room"] = 0.205
+    params = edited(tmp_path, edit)
+    report = arrangement.analyse(params, _parts(params))
+    [failure] = report.failures
+    assert failure.startswith("neck_yaw_jackshaft: neck_yaw_jackshaft_bearing_floating must float, but its outer ring "
+                              "(H7, the sliding one) has 0.20 mm of room towards -z to neck_yaw_jackshaft_housing: it "
+                              "needs 0.21 mm (0.012 of growth over 8.5 mm, steel shaft in aluminium-6082 housing, both "
+                              "warmed 120 K governs, + 0.2 ISO 2768-m)"), failure
 
 
 def test_the_tilt_has_a_fixed_and_a_floating_626(report):
@@ -80,6 +121,53 @@ def test_yaw_is_cross_located(report):
     lower, upper = _bearing(report, "neck_yaw_bearing_lower"), _bearing(report, "neck_yaw_bearing_upper")
     assert lower.role == upper.role == "one way"
     assert lower.outer.tolerance == "M7" and not lower.outer.slides and lower.inner.slides
+    # each inner ring on its spacer ring, which bears on the ring's face alone (no shim in the stack)
+    assert (lower.inner.minus.stop, upper.inner.plus.stop) == ("neck_yaw_spacer_lower", "neck_yaw_spacer_upper")
+    assert lower.shims == upper.shims == []
+
+
+def test_the_shims_beside_bearings_bear_on_their_rings(report):
+    """The one shim beside a bearing, the tilt's DIN 988 13 x 19 between the fixed 626's outer ring and its DIN 472
+    ring, bears on the outer ring's face (from the pitch circle, 12.5, out: the 626-2Z has no D2 in the catalogue)."""
+    [shim] = [s for j in report.joints for b in j.bearings for s in b.shims]
+    assert shim == arrangement.ShimFace("eyes_tilt_bearing_spacer", "din988-13x19x1", "outer", 13, 19, (12.5, 19), True)
+    assert "    shim eyes_tilt_bearing_spacer (din988-13x19x1, 13 x 19) on the outer ring, whose face is 12.5 to 19 " \
+           "across: bears on the ring alone" in arrangement.format_report(report).splitlines()
+
+
+def test_the_old_din988_shims_on_the_yaw_reach_over_the_seals(tmp_path):
+    """The yaw as it was: a DIN 988 15 x 21 shim where each spacer ring is, on the 61802's inner ring, whose face is
+    17.5 across: the shim lies on the seal, which turns with the outer ring while the shim stands with the shaft."""
+    params = edited(tmp_path, lambda d: d["purchased"].update(
+        {"din988-15x21x1": {"kind": "shim", "bore": 15, "outside": 21, "thickness": 1.0, "mass": 0.0013}}))
+    parts = _parts(params)
+    spacers = [p for p in parts if p.name.startswith("neck_yaw_spacer_")]
+    assert len(spacers) == 2
+    shims = [purchased.shim(params, p.name.replace("spacer", "shim"), "din988-15x21x1", p.link, p.placement)
+             for p in spacers]
+    report = _analyse(params, parts, shims, {p.name for p in spacers})
+    assert report.failures == [
+        f"neck_yaw: neck_yaw_shim_{which} (din988-15x21x1, 21 across) bears on neck_yaw_bearing_{which}'s inner ring, "
+        f"whose face is 17.5 across (skf-61802-2RS): it reaches over the seal or shield; take a shim no more than 17.5 "
+        f"across" for which in ("lower", "upper")]
+    # the shims are looked through: the DIN 471 rings beyond them still locate the inner rings
+    lower = _bearing(report, "neck_yaw_bearing_lower")
+    assert lower.role == "one way" and lower.inner.minus.stop == "neck_yaw_ring_lower"
+    assert lower.inner.minus.through == ("neck_yaw_shim_lower",) and lower.inner.minus.shim_gap == 0.0
+    with pytest.raises(arrangement.BearingArrangementError, match="neck_yaw_shim_lower .* reaches over the seal"):
+        arrangement.enforce(report)
+
+
+def test_a_shim_reaching_in_over_an_outer_rings_shield_fails(tmp_path):
+    """The tilt's shim with a 12 mm bore: it clears the inner ring (11) but lies inside the outer ring's face."""
+    def edit(d):
+        d["purchased"]["shim-12x19x1"] = {"kind": "shim", "bore": 12, "outside": 19, "thickness": 1.0, "mass": 0.0013}
+        d["geometry"]["tilt_bearings"]["spacer"] = "shim-12x19x1"
+    params = edited(tmp_path, edit)
+    report = arrangement.analyse(params, _parts(params))
+    assert report.failures == ["eyes_tilt: eyes_tilt_bearing_spacer (shim-12x19x1, its bore 12) bears on "
+                               "eyes_tilt_bearing_right's outer ring, whose face starts at 12.5 (skf-626-2Z): it reaches "
+                               "in over the seal or shield; take a shim with a bore of at least 12.5"]
 
 
 def _at(params, bearing: Part, name: str, shape, z: float, link: str | None = None) -> Part:
@@ -168,3 +256,5 @@ def test_the_package_reports_the_arrangement(fab):
         "eyes_tilt_jackshaft": "fixed + floating"}
     text = (fab / "reports" / "bearing-arrangement.txt").read_text()
     assert "neck_pitch_bearing_right (skf-61800-2RS): floating" in text
+    assert "shim eyes_tilt_bearing_spacer (din988-13x19x1, 13 x 19) on the outer ring, whose face is 12.5 to 19 across: " \
+           "bears on the ring alone" in text

@@ -8,6 +8,7 @@ import pytest
 import yaml
 
 from robogene_head.checks import interference
+from robogene_head import geom
 from robogene_head.geom import distance
 from robogene_head_model.params import ParameterError, load
 from robogene_head.parts import build_all, mounts
@@ -45,9 +46,32 @@ def test_a_belt_wider_than_the_pulleys_is_named(params, external, tmp_path):
     data["geometry"]["pulleys"]["tilt"]["width"] = 6
     path = tmp_path / "narrow.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ParameterError, match=r"purchased\.xl-belt-037: a 9.525 mm wide belt does not run between "
-                                             r"the flanges of 6 mm pulleys \(4.8 mm apart\)"):
+    with pytest.raises(ParameterError, match=r"purchased\.xl-belt-037: a 10\.025 mm wide belt \(at its widest\) does "
+                                             r"not run between the flanges of the eyes_tilt stage's 6 mm pulleys "
+                                             r"\(1\.5 thick, 3 mm apart\)"):
         build_all(load(path), external)
+
+
+def test_the_catalogue_pulleys_are_drawn_with_their_own_flanges(params):
+    """The XL 037 pulleys' flanges are 1.5 mm thick (the maker's figure), not the 0.6 of pulleys.flange: the toothed
+    body runs 11.3 mm between them, where the XL belt, at its widest 9.525 + 0.5, has 1.275 mm of room."""
+    for joint in ("neck_yaw", "eyes_tilt"):
+        assert mounts.flange_thickness(params, joint) == 1.5
+        assert mounts.belt_room(params, joint) == (pytest.approx(1.275), pytest.approx(11.3), pytest.approx(10.025))
+    shape = mounts.pulley(params, "eyes_tilt", 14, 6)
+    toothed = 14 * 5.08 / math.pi - 0.508
+    for z, across in ((0.75, 28.0), (1.45, 28.0), (1.55, toothed), (14.3 - 1.55, toothed), (14.3 - 0.75, 28.0)):
+        slab = shape.intersect(geom.cyl("z", 40, z - 0.01, z + 0.01))
+        assert slab.BoundingBox().xlen == pytest.approx(across, abs=0.01), z
+
+
+def test_a_belt_at_its_widest_between_thick_flanges_is_refused(tmp_path, external):
+    """2.2 mm flanges leave 9.9 mm: the belt's nominal 9.525 would pass, its widest (+0.5) does not."""
+    params = edited(tmp_path, lambda d: d["geometry"]["pulleys"]["tilt"].update(flange_thickness=2.2))
+    with pytest.raises(ParameterError, match=r"purchased\.xl-belt-037: a 10\.025 mm wide belt \(at its widest\) does "
+                                             r"not run between the flanges of the eyes_tilt stage's 14\.3 mm pulleys "
+                                             r"\(2\.2 thick, 9\.9 mm apart\)"):
+        build_all(params, external)
 
 
 def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path):
@@ -62,7 +86,7 @@ def test_each_stage_draws_its_pulleys_and_belt_at_its_own_pitch(params, tmp_path
     assert (yaw.xlen, yaw.zlen) == (pytest.approx(20 * 5.08 / math.pi - 0.508 + 2 * 2.93), pytest.approx(14.3))
     assert mounts.belts(params) == [("xl-belt-35T", "neck_yaw", 35), ("xl-belt-53T", "eyes_tilt", 53)]
     mxl = edited(tmp_path, lambda data: data["geometry"]["pulleys"]["yaw"].update(
-        belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5))
+        belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5, flange_thickness=0.6))
     small = mounts.pulley(mxl, "neck_yaw", 14, 4).BoundingBox()
     assert (small.xlen, small.zlen) == (pytest.approx(14 * 2.032 / math.pi - 0.508 + 3), pytest.approx(8))
     old = edited(tmp_path, lambda data: data["geometry"]["head"]["tilt_motor"].update(x=-35, z=85))

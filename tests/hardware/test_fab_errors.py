@@ -32,7 +32,7 @@ def test_a_torque_path_too_weak_stops_the_build_with_its_table(tmp_path):
     from param_variants import edited
 
     def mxl(data):
-        data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8)
+        data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8, flange_thickness=0.6)
     report = torque_path.analyse(edited(tmp_path, mxl))
     with pytest.raises(fab.BuildError, match=r"^torque path elements below the required margin 1\.5: neck_yaw\[3\] "
                                              r"belt") as caught:

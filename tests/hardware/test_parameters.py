@@ -33,6 +33,14 @@ def test_missing_key_is_named(raw):
     assert _err(data) == "head.yaml: joints.neck_yaw.axis: missing"
 
 
+def test_a_checks_own_finding_names_the_key(params):
+    """Node.fail is public: a check outside params.py reports a finding on a key with the file and the key's path."""
+    error = params.geometry("pulleys", "tilt").fail("flange_thickness", "too thick")
+    assert isinstance(error, P.ParameterError)
+    assert str(error) == f"{params.path}: geometry.pulleys.tilt.flange_thickness: too thick"
+    assert not hasattr(P.Node, "_fail")
+
+
 def test_wrong_type_is_named(raw):
     data = copy.deepcopy(raw)
     data["joints"]["eyes_tilt"]["origin"][2] = "eighty-two"

@@ -59,7 +59,8 @@ def test_the_tilt_stage_passes_every_element(params):
 
 @pytest.mark.parametrize("edit, weak", [
     # the stage on MXL stock again, pulleys drawn at its pitch
-    (lambda data: data["geometry"]["pulleys"]["tilt"].update(belt="mxl-belt-6mm", pitch=2.032, width=8), "belt"),
+    (lambda data: data["geometry"]["pulleys"]["tilt"].update(belt="mxl-belt-6mm", pitch=2.032, width=8,
+                                                             flange_thickness=0.6), "belt"),
     # the motor pulley on a plain bore: nothing but friction between them
     (lambda data: data["torque_paths"]["eyes_tilt"].__setitem__(
         2, {"element": "plain", "at": "gearhead", "shaft": 6, "what": "plain bore"}), "plain"),

@@ -199,7 +199,7 @@ def test_every_element_passes(params):
 
 def test_the_yaw_stage_on_mxl_stock_fails_alone(tmp_path):
     mxl = edited(tmp_path, lambda data: data["geometry"]["pulleys"]["yaw"].update(
-        belt="mxl-belt-6mm", pitch=2.032, width=8))
+        belt="mxl-belt-6mm", pitch=2.032, width=8, flange_thickness=0.6))
     report = torque_path.analyse(mxl)
     assert [(e.joint, e.element) for e in report.failures()] == [("neck_yaw", "belt")]
     assert report.failures()[0].margin < 1
@@ -345,7 +345,8 @@ def test_a_clamp_naming_a_wrong_coupling_is_refused(tmp_path):
 def _mxl_yaw(data):
     """The yaw stage back on MXL stock, with its old 36T joint pulley (a 20T MXL pulley is smaller than the 15 mm
     shaft): its pulleys redrawn at the MXL pitch, the motor pulley bought as the XL one is."""
-    data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5, joint_teeth=36)
+    data["geometry"]["pulleys"]["yaw"].update(belt="mxl-belt-6mm", pitch=2.032, width=8, rim=1.5, joint_teeth=36,
+                                              flange_thickness=0.6)
     data["purchased"]["mxl-pulley-14T-bore6"] = dict(data["purchased"]["xl-pulley-14T-bore6"])
 
 

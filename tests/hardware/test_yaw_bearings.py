@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
-"""The yaw joint on two bearings: their seats in the floor's boss, the rings and shims that locate them on the fixed
+"""The yaw joint on two bearings: their seats in the floor's boss, the rings and spacers that locate them on the fixed
 shaft, the bearing-load check that holds them against their C0 (and fails on a head tipping on one bearing, on
 bearings too close together for their load, on an overload), and the circlip pliers' reach in the sequence."""
 import json
@@ -28,7 +28,7 @@ def world(params):
     parts = [p for p in head_frame.build(params) + neck.build(params) + joint_encoders.build(params)
              if p.name in ("head_floor", "neck_roll_stage", "neck_yaw_joint_pulley", "neck_yaw_joint_encoder",
                            "neck_yaw_encoder_magnet", "neck_yaw_encoder_bracket")
-             or p.name.startswith(("neck_yaw_bearing_", "neck_yaw_shim_", "neck_yaw_ring_"))]
+             or p.name.startswith(("neck_yaw_bearing_", "neck_yaw_spacer_", "neck_yaw_ring_"))]
     return {p.name: p.shape.moved(location(poses[p.link])) for p in parts}
 
 
@@ -48,15 +48,18 @@ def test_two_bearings_span_the_boss_and_sit_against_its_land(params, world):
 
 
 @pytest.mark.parametrize("which", ["lower", "upper"])
-def test_each_ring_stands_off_its_bearing_on_the_shim(params, world, which):
-    ring, shim, bearing = (world[f"neck_yaw_{k}_{which}"] for k in ("ring", "shim", "bearing"))
-    thickness = params.purchased(yaw_bearings.layout(params).shim).num("thickness")
+def test_each_ring_stands_off_its_bearing_on_the_spacer(params, world, which):
+    ring, spacer, bearing = (world[f"neck_yaw_{k}_{which}"] for k in ("ring", "spacer", "bearing"))
+    outside, thickness = yaw_bearings.layout(params).spacer
     assert distance(ring, bearing) == pytest.approx(thickness)
     assert thickness >= neck.LUG_GAP
-    assert distance(ring, shim) < 1e-6 and distance(shim, bearing) < 1e-6
+    assert distance(ring, spacer) < 1e-6 and distance(spacer, bearing) < 1e-6
+    # the spacer bears on the inner ring's face alone, off the seal
+    assert outside <= params.purchased("skf-61802-2RS").num("inner_ring_outside")
+    assert spacer.BoundingBox().xlen == pytest.approx(outside)
     # the ring sits in its groove: it overlaps no part of the shaft
     assert ring.intersect(world["neck_roll_stage"]).Volume() < 1e-3
-    assert shim.intersect(world["neck_roll_stage"]).Volume() < 1e-3
+    assert spacer.intersect(world["neck_roll_stage"]).Volume() < 1e-3
 
 
 def test_the_lower_rings_lugs_clear_the_turning_floor(params, world):
@@ -88,13 +91,14 @@ def test_the_sensor_faces_the_shaft_end(params, world):
 
 
 @pytest.mark.parametrize("edit, message", [
-    (lambda d: d["purchased"]["din988-15x21x1"].update(thickness=0.1),
-     r"geometry\.yaw_bearings\.shim: the din471-15x1 ring's lugs reach out to 22\.6.*this one: 0\.1"),
-    (lambda d: d["purchased"]["din988-15x21x1"].update(outside=23),
-     r"geometry\.yaw_bearings\.shim: din988-15x21x1 \(23 across\) reaches the skf-61802-2RS's outer ring"),
+    (lambda d: d["geometry"]["yaw_bearings"]["spacer"].update(thickness=0.1),
+     r"geometry\.yaw_bearings\.spacer\.thickness: the din471-15x1 ring's lugs reach out to 22\.6.*this one: 0\.1"),
+    (lambda d: d["geometry"]["yaw_bearings"]["spacer"].update(outside=21),
+     r"geometry\.yaw_bearings\.spacer\.outside: 21 must be over the 15 mm shaft and within the skf-61802-2RS's inner "
+     r"ring's face \(17\.5 across\)"),
     (lambda d: d["geometry"]["yaw_bearings"].update(span=5.5), r"geometry\.yaw_bearings\.span: 5\.5 leaves under 1 mm"),
     (lambda d: d["geometry"]["yaw_bearings"].update(land_hole=16), r"geometry\.yaw_bearings\.land_hole: 16 must clear"),
-    (lambda d: d["purchased"]["din471-15x1"].update(shaft=12), r"din471-15x1 \(for a 12 mm shaft\).*must fit"),
+    (lambda d: d["purchased"]["din471-15x1"].update(shaft=12), r"din471-15x1 \(for a 12 mm shaft\) must fit"),
 ])
 def test_a_seat_that_cannot_hold_its_bearings_is_refused(tmp_path, edit, message):
     with pytest.raises(ParameterError, match=message):

@@ -78,6 +78,6 @@ def system_lines(params, boards: int) -> list[tuple[str, float, str]]:
         if qty == "boards":
             qty = boards
         elif isinstance(qty, bool) or not isinstance(qty, int) or qty < 1:
-            raise item._fail("qty", f"expected a whole number >= 1 or `boards`, got {qty!r}")
+            raise item.fail("qty", f"expected a whole number >= 1 or `boards`, got {qty!r}")
         out.append((item.text("key"), qty, item.text("for")))
     return out

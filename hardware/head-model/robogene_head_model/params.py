@@ -57,7 +57,9 @@ class Node:
     def __init__(self, data: Any, path: str, source: str):
         self._data, self._path, self._source = data, path, source
 
-    def _fail(self, key: str, what: str) -> ParameterError:
+    def fail(self, key: str, what: str) -> ParameterError:
+        """The error to raise for `key` of this node: the file, the key's full path, then `what`. Public: the checks
+        that read a node report their own findings on its keys through it."""
         where = f"{self._path}.{key}" if self._path else key
         return ParameterError(f"{self._source}: {where}: {what}")
 
@@ -68,13 +70,13 @@ class Node:
         if not isinstance(self._data, dict):
             raise ParameterError(f"{self._source}: {self._path or '<top>'}: expected a mapping")
         if key not in self._data:
-            raise self._fail(key, "missing")
+            raise self.fail(key, "missing")
         return self._data[key]
 
     def node(self, key: str) -> "Node":
         value = self.raw(key)
         if not isinstance(value, dict):
-            raise self._fail(key, f"expected a mapping, got {type(value).__name__}")
+            raise self.fail(key, f"expected a mapping, got {type(value).__name__}")
         return Node(value, f"{self._path}.{key}" if self._path else key, self._source)
 
     def keys(self) -> list[str]:
@@ -84,35 +86,35 @@ class Node:
             maximum: float | None = None) -> float:
         value = self.raw(key)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise self._fail(key, f"expected a number, got {value!r}")
+            raise self.fail(key, f"expected a number, got {value!r}")
         if positive and value <= 0:
-            raise self._fail(key, f"must be > 0, got {value!r}")
+            raise self.fail(key, f"must be > 0, got {value!r}")
         if minimum is not None and value < minimum:
-            raise self._fail(key, f"must be >= {minimum}, got {value!r}")
+            raise self.fail(key, f"must be >= {minimum}, got {value!r}")
         if maximum is not None and value > maximum:
-            raise self._fail(key, f"must be <= {maximum:g}, got {value!r}")
+            raise self.fail(key, f"must be <= {maximum:g}, got {value!r}")
         return float(value)
 
     def text(self, key: str) -> str:
         value = self.raw(key)
         if not isinstance(value, str) or not value:
-            raise self._fail(key, f"expected a non-empty string, got {value!r}")
+            raise self.fail(key, f"expected a non-empty string, got {value!r}")
         return value
 
     def vec(self, key: str, n: int = 3) -> tuple[float, ...]:
         value = self.raw(key)
         if not isinstance(value, list) or len(value) != n:
-            raise self._fail(key, f"expected a list of {n} numbers, got {value!r}")
+            raise self.fail(key, f"expected a list of {n} numbers, got {value!r}")
         for i, item in enumerate(value):
             if isinstance(item, bool) or not isinstance(item, (int, float)) or not math.isfinite(item):
-                raise self._fail(f"{key}[{i}]", f"expected a number, got {item!r}")
+                raise self.fail(f"{key}[{i}]", f"expected a number, got {item!r}")
         return tuple(float(v) for v in value)
 
     def points(self, key: str) -> list[tuple[float, float]]:
         """A non-empty list of [x, y] points (hole positions and the like)."""
         value = self.raw(key)
         if not isinstance(value, list) or not value:
-            raise self._fail(key, f"expected a list of [x, y] points, got {value!r}")
+            raise self.fail(key, f"expected a list of [x, y] points, got {value!r}")
         items = Node({f"{key}[{i}]": item for i, item in enumerate(value)}, self._path, self._source)
         return [items.vec(f"{key}[{i}]", 2) for i in range(len(value))]
 
@@ -159,10 +161,10 @@ def _joint(name: str, node: Node) -> Joint:
     axis = node.vec("axis")
     norm = math.sqrt(sum(a * a for a in axis))
     if abs(norm - 1.0) > 1e-9:
-        raise node._fail("axis", f"must be a unit vector, has length {norm:.6g}")
+        raise node.fail("axis", f"must be a unit vector, has length {norm:.6g}")
     lower, upper = node.num("min"), node.num("max")
     if lower >= upper:
-        raise node._fail("min", f"must be below max ({lower} >= {upper})")
+        raise node.fail("min", f"must be below max ({lower} >= {upper})")
     return Joint(name, node.text("parent"), node.text("child"), node.vec("origin"), axis, lower, upper)
 
 
@@ -172,7 +174,7 @@ def _check_purchased(root: Node) -> None:
         part = catalog.node(key)
         kind = part.text("kind")
         if kind not in PURCHASED_KINDS:
-            raise part._fail("kind", f"unknown kind {kind!r}; known: {', '.join(sorted(PURCHASED_KINDS))}")
+            raise part.fail("kind", f"unknown kind {kind!r}; known: {', '.join(sorted(PURCHASED_KINDS))}")
         for field in PURCHASED_KINDS[kind]:
             part.num(field, positive=True)
 
@@ -185,13 +187,13 @@ def _check_drives(root: Node) -> None:
                             ("joint_encoder", "joint_encoder"), ("bearing", "bearing"), ("brake", "brake")):
             if not drive.has(field):
                 if field in ("motor", "gearhead", "encoder"):
-                    raise drive._fail(field, "missing")
+                    raise drive.fail(field, "missing")
                 continue
             key = drive.text(field)
             if not catalog.has(key):
-                raise drive._fail(field, f"{key!r} is not listed under purchased")
+                raise drive.fail(field, f"{key!r} is not listed under purchased")
             if catalog.node(key).text("kind") != kind:
-                raise drive._fail(field, f"{key!r} is a {catalog.node(key).text('kind')}, expected a {kind}")
+                raise drive.fail(field, f"{key!r} is a {catalog.node(key).text('kind')}, expected a {kind}")
 
 
 def parse(data: Any, source: str, path: Path) -> HeadParameters:
@@ -204,7 +206,7 @@ def parse(data: Any, source: str, path: Path) -> HeadParameters:
         joints[name] = _joint(name, joints_node.node(name))
     extra = set(joints_node.keys()) - set(CHAIN_JOINTS)
     if extra:
-        raise joints_node._fail(sorted(extra)[0], "unknown joint (the chain is " + ", ".join(CHAIN_JOINTS) + ")")
+        raise joints_node.fail(sorted(extra)[0], "unknown joint (the chain is " + ", ".join(CHAIN_JOINTS) + ")")
     listed = root.raw("control_joints")
     if not isinstance(listed, list) or len(listed) != len(CONTROL_JOINTS):
         raise ParameterError(f"{source}: control_joints: expected a list of {len(CONTROL_JOINTS)} joints")
@@ -212,10 +214,10 @@ def parse(data: Any, source: str, path: Path) -> HeadParameters:
     for i, (entry, expected) in enumerate(zip(listed, CONTROL_JOINTS)):
         node = Node(entry, f"control_joints[{i}]", source)
         if node.text("name") != expected:
-            raise node._fail("name", f"expected {expected!r} at index {i}, got {node.text('name')!r}")
+            raise node.fail("name", f"expected {expected!r} at index {i}, got {node.text('name')!r}")
         lo, hi = node.num("min"), node.num("max")
         if lo >= hi:
-            raise node._fail("min", f"must be below max ({lo} >= {hi})")
+            raise node.fail("min", f"must be below max ({lo} >= {hi})")
         limits[expected] = (lo, hi)
     # The virtual eye joints must be reachable by the physical pan joints.
     vs, vg = limits["eyes_version"], limits["eyes_vergence"]
@@ -233,7 +235,7 @@ def parse(data: Any, source: str, path: Path) -> HeadParameters:
     _check_drives(root)
     cams = root.node("cameras")
     if not root.node("purchased").has(cams.text("model")):
-        raise cams._fail("model", f"{cams.text('model')!r} is not listed under purchased")
+        raise cams.fail("model", f"{cams.text('model')!r} is not listed under purchased")
     half = cams.num("baseline", positive=True) / 2
     if abs(joints["left_eye_pan"].origin[1] - half) > 1e-9 or abs(joints["right_eye_pan"].origin[1] + half) > 1e-9:
         raise ParameterError(f"{source}: joints.left_eye_pan.origin/right_eye_pan.origin: eyes must sit at "

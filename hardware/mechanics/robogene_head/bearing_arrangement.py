@@ -14,11 +14,14 @@ it. A ring is located on a side when its stop is within bearing_arrangement.loca
   the housing holds its outer ring on the +axis face; likewise towards -axis. Both ways: a fixed bearing. One way:
   a bearing that locates one way (a cross-located pair is two of them, facing each other). Neither: floating.
 A floating bearing must let its sliding ring move (the ring whose fit's mean is a clearance, fits.slides) at least
-  alpha dT L + t(L)
-each way, where L is its distance from the fixed bearing along the axis, alpha dT the growth of an aluminium shaft
-`temperature_difference` warmer than its aluminium housing, and t(L) the ISO 2768-m tolerance of a length L (the
-drawings' general tolerance, which places the seats), and its tight ring must sit against a shoulder.
-A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces).
+  g(L) + t(L)
+each way, where L is its distance from the fixed bearing along the axis, g(L) the shaft's growth against its housing
+over L in the worst of thermal_growth's cases, from the shaft's (the journal's) and the housing's own materials, and
+t(L) the ISO 2768-m tolerance of a length L (the drawings' general tolerance, which places the seats), and its tight
+ring must sit against a shoulder.
+A retaining ring that bears straight on a ring (no shim between) must stay within that ring's face (ring_faces), and
+so must a shim that bears on a ring (shim_faces): a shim beside a sealed or shielded bearing locates the ring it
+touches, never the seal or shield between the rings.
 Per joint: the joints under gearhead_fixed have the gearhead's own (preloaded) output bearings as their fixed
 bearing, which counts when the gearhead's axis is the shaft's: every ball bearing there must float. The joints under
 cross_located have two bearings each locating one way, in opposite directions. Every other joint, and every
@@ -32,7 +35,7 @@ import numpy as np
 
 from robogene_head_model.params import CHAIN_JOINTS, HeadParameters, ParameterError
 
-from . import fits, geom, jackshafts, kinematics
+from . import fits, geom, jackshafts, kinematics, thermal_growth
 from .geom import exact_bounds, location
 
 EDGE = 0.05        # mm the probe keeps inside a ring's face, off the seat's own cylinder
@@ -49,7 +52,8 @@ class BearingArrangementError(RuntimeError):
 class Side:
     gap: float | None     # mm from the ring's face to its stop; None: no stop within the search length
     stop: str             # the stop's part name ("" when none)
-    through: tuple = ()   # the shims between the ring and its stop
+    through: tuple = ()   # the shims between the ring and its stop, the ring's neighbour first
+    shim_gap: float | None = None   # mm from the ring's face to the first of them
 
 
 @dataclass(frozen=True)
@@ -61,6 +65,18 @@ class Ring:
     mean_clearance: float  # mm, negative: interference
     minus: Side           # towards -axis (the bearing's axis, see BearingState.axis)
     plus: Side
+
+
+@dataclass(frozen=True)
+class ShimFace:
+    """A shim that bears on a bearing's ring, and the part of that ring's face it may cover."""
+    shim: str             # part name
+    design: str           # catalogue key
+    ring: str             # "inner" or "outer"
+    bore: float           # mm, the shim's
+    outside: float
+    face: tuple           # (inside, outside) mm: the ring's face, between its bore or outside and its seal or shield
+    ok: bool
 
 
 @dataclass
@@ -76,6 +92,8 @@ class BearingState:
     outer: Ring
     span: float | None = None          # mm along the axis from the joint's fixed bearing (floating bearings)
     required: float | None = None      # mm of room each way the sliding ring needs
+    growth: str = ""                   # the materials and the thermal case that governs `required`
+    shims: list = field(default_factory=list)   # ShimFace: the shims that bear on its rings (shim_faces)
 
     def ring(self, name: str) -> Ring:
         return self.inner if name == "inner" else self.outer
@@ -126,12 +144,13 @@ def general_tolerance(length: float) -> float:
     raise ValueError(f"a length of {length:g} mm is outside ISO 2768-m's table (0.5 to 1000 mm)")
 
 
-def required_float(params: HeadParameters, span: float) -> tuple[float, float, float]:
-    """(room each way, thermal growth, tolerance) in mm for a floating bearing `span` mm from the fixed one."""
-    node = _node(params)
-    growth = node.num("expansion", positive=True) * node.num("temperature_difference", positive=True) * span
+def required_float(params: HeadParameters, span: float, shaft: tuple[str, str], housing: tuple[str, str]) \
+        -> tuple[float, thermal_growth.Growth, float]:
+    """(room each way, thermal growth, tolerance) in mm for a floating bearing `span` mm from the fixed one, its shaft
+    and housing given as (part name, material)."""
+    growth = thermal_growth.differential(params, shaft, housing, span)
     tol = general_tolerance(span)
-    return growth + tol, growth, tol
+    return growth.mm + tol, growth, tol
 
 
 def _annulus(params: HeadParameters, key: str, ring: str) -> tuple[float, float]:
@@ -166,7 +185,7 @@ class _Probe:
         """The nearest stop of a ring among `candidates` beyond the ring's face towards sign * z, through shims."""
         face = self.width if sign > 0 else 0.0
         end = face + sign * self.search
-        free, skip, shims = 0.0, set(skip), []
+        free, skip, shims, first = 0.0, set(skip), [], None
         while (end - face) * sign > 1e-9:
             z0, z1 = sorted((face, end))
             probe = geom.tube("z", 2 * radii[1], 2 * radii[0], z0, z1)
@@ -188,15 +207,17 @@ class _Probe:
                 if best is None or gap < best[0]:
                     best = (gap, part, far)
             if best is None:
-                return Side(None, "")
+                return Side(None, "", tuple(shims), first)
             gap, part, far = best
             if not self._is_shim(part):
-                return Side(round(free + gap, 4), part.name, tuple(shims))
+                return Side(round(free + gap, 4), part.name, tuple(shims), first)
+            if first is None:
+                first = round(gap, 4)
             free += gap           # a shim is pushed by whatever pushes it: its free room counts, its thickness not
             face = far
             skip.add(part.name)
             shims.append(part.name)
-        return Side(None, "")
+        return Side(None, "", tuple(shims), first)
 
 
 def _joint_of(params: HeadParameters, a: str, b: str) -> str | None:
@@ -257,12 +278,14 @@ def _gearhead_on_axis(params, parts_by_name, poses, joint, bearing: BearingState
     return gear.name, frame[:3, 3]
 
 
-def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located: float) -> list[str]:
+def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located: float, by_name: dict) -> list[str]:
     problems = []
     axis = np.array(b.axis)
     b.span = round(abs(float(np.dot(np.array(b.centre) - fixed_at, axis))), 2)
-    need, growth, tol = required_float(params, b.span)
+    shaft, housing = by_name[seat.journal], by_name[seat.housing]
+    need, growth, tol = required_float(params, b.span, (shaft.name, shaft.material), (housing.name, housing.material))
     b.required = round(need, 3)
+    b.growth = f"{growth.shaft} shaft in {growth.housing} housing, {growth.governs} governs"
     sliding = b.ring(seat.sliding_ring)
     tight = b.ring(seat.tight_ring)
     where = f"{b.joint}: {b.bearing}"
@@ -274,8 +297,7 @@ def _check_floating(params, b: BearingState, fixed_at: np.ndarray, seat, located
             direction = _direction(axis if label == "+axis" else -axis)
             problems.append(f"{where} must float, but its {sliding.ring} ring ({sliding.tolerance}, the sliding one) has "
                             f"{side.gap:.2f} mm of room towards {direction} to {side.stop}: it needs {need:.2f} mm "
-                            f"({growth:.3f} of growth over {b.span:g} mm at {_node(params).num('temperature_difference'):g} K "
-                            f"+ {tol:g} ISO 2768-m)")
+                            f"({growth.mm:.3f} of growth over {b.span:g} mm, {b.growth}, + {tol:g} ISO 2768-m)")
     if not any(side.gap is not None and side.gap <= located for side in (tight.minus, tight.plus)):
         problems.append(f"{where}: its tight {tight.ring} ring ({tight.tolerance}) sits against no shoulder")
     return problems
@@ -305,12 +327,53 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
                                     f"onto its shield or seal; put a spacer between them or take a smaller ring")
             else:
                 inside = fitted.num("lug_inner_diameter", positive=True)
-                edge = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
-                    (item.num("bore") + item.num("outside")) / 2
+                edge = _face_edges(item)[1]
                 if inside < edge - 1e-9:
                     problems.append(f"{b.joint}: {stop.name} ({stop.design}, its lugs in to {inside:g} as fitted) bears on "
                                     f"{b.bearing}'s outer ring, whose face starts at {edge:g} ({b.key}): it reaches "
                                     f"onto its shield or seal; put a shim between them")
+    return problems
+
+
+def _face_edges(item) -> tuple[float, float]:
+    """(inner ring's face outside, outer ring's face inside) in mm: where a bearing's seal or shield begins."""
+    inside = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
+        (item.num("bore") + item.num("outside")) / 2
+    return item.num("inner_ring_outside", positive=True), inside
+
+
+def shim_faces(params: HeadParameters, b: BearingState, by_name: dict, located: float) -> list[str]:
+    """A shim that bears on a bearing's ring (the first of a stack, within located_within of the ring's face) must bear
+    on that ring alone: beside the inner ring, its outside within the inner ring's face (inner_ring_outside, the maker's
+    d1); beside the outer ring, its bore outside the outer ring's face's inner edge (outer_ring_inside, the maker's D2,
+    else the pitch circle). Beyond that edge it lies on the seal or shield, which is fixed to the outer ring: a shim
+    standing with one ring rubs it as the other turns, and one clamped on it presses it onto the balls' cage.
+    Records each shim on b.shims; returns the problems."""
+    problems = []
+    item = params.purchased(b.key)
+    inner_face, outer_face = _face_edges(item)
+    for ring in (b.inner, b.outer):
+        for side in (ring.minus, ring.plus):
+            if not side.through or side.shim_gap is None or side.shim_gap > located:
+                continue
+            part = by_name[side.through[0]]
+            shim = params.purchased(part.design)
+            bore, outside = shim.num("bore", positive=True), shim.num("outside", positive=True)
+            if ring.ring == "inner":
+                face, ok = (item.num("bore"), inner_face), outside <= inner_face + 1e-9
+            else:
+                face, ok = (outer_face, item.num("outside")), bore >= outer_face - 1e-9
+            b.shims.append(ShimFace(part.name, part.design, ring.ring, bore, outside, face, ok))
+            if ok:
+                continue
+            if ring.ring == "inner":
+                problems.append(f"{b.joint}: {part.name} ({part.design}, {outside:g} across) bears on {b.bearing}'s "
+                                f"inner ring, whose face is {inner_face:g} across ({b.key}): it reaches over the seal or "
+                                f"shield; take a shim no more than {inner_face:g} across")
+            else:
+                problems.append(f"{b.joint}: {part.name} ({part.design}, its bore {bore:g}) bears on {b.bearing}'s "
+                                f"outer ring, whose face starts at {outer_face:g} ({b.key}): it reaches in over the seal "
+                                f"or shield; take a shim with a bore of at least {outer_face:g}")
     return problems
 
 
@@ -355,6 +418,7 @@ def analyse(params: HeadParameters, parts: list) -> Report:
         result = JointResult(joint, "", "", bearings)
         for b in bearings:
             result.problems += ring_faces(params, b, by_name, located)
+            result.problems += shim_faces(params, b, by_name, located)
         fixed = [b for b in bearings if b.role == "fixed"]
         one_way = [b for b in bearings if b.role == "one way"]
         floating = [b for b in bearings if b.role == "floating"]
@@ -382,7 +446,7 @@ def analyse(params: HeadParameters, parts: list) -> Report:
                                        f"bearings (the fixed bearing): they fight; it must float")
             if gear:
                 for b in floating:
-                    result.problems += _check_floating(params, b, gear[1], seats[b.bearing], located)
+                    result.problems += _check_floating(params, b, gear[1], seats[b.bearing], located, by_name)
         else:
             result.arrangement = "fixed + floating"
             result.fixed = " + ".join(b.bearing for b in fixed)
@@ -398,13 +462,21 @@ def analyse(params: HeadParameters, parts: list) -> Report:
                                        f"fixed bearing: it must float")
             if len(fixed) == 1:
                 for b in floating:
-                    result.problems += _check_floating(params, b, np.array(fixed[0].centre), seats[b.bearing], located)
+                    result.problems += _check_floating(params, b, np.array(fixed[0].centre), seats[b.bearing], located,
+                                                       by_name)
         joints.append(result)
     return Report(located, search, joints, problems)
 
 
 def _side_text(side: Side, search: float) -> str:
-    return f"free over {search:g} mm" if side.gap is None else f"{side.gap:.2f} mm to {side.stop}"
+    text = f"free over {search:g} mm" if side.gap is None else f"{side.gap:.2f} mm to {side.stop}"
+    return text + (f" (through {', '.join(side.through)})" if side.through else "")
+
+
+def _shim_text(s: ShimFace) -> str:
+    verdict = "bears on the ring alone" if s.ok else "reaches over the seal or shield"
+    return f"    shim {s.shim} ({s.design}, {s.bore:g} x {s.outside:g}) on the {s.ring} ring, whose face is " \
+           f"{s.face[0]:g} to {s.face[1]:g} across: {verdict}"
 
 
 def format_report(report: Report) -> str:
@@ -414,7 +486,7 @@ def format_report(report: Report) -> str:
         lines.append(f"{j.joint}: {j.arrangement}; fixed: {j.fixed or 'none'}" + ("  FAIL" if j.problems else ""))
         for b in j.bearings:
             axis = np.array(b.axis)
-            extra = f", {b.span:g} mm from the fixed bearing, needs {b.required:.2f} mm each way" \
+            extra = f", {b.span:g} mm from the fixed bearing, needs {b.required:.2f} mm each way ({b.growth})" \
                 if b.required is not None else ""
             stops = f", stops the shaft towards " + " and ".join(
                 _direction(axis if s == "+axis" else -axis) for s in b.stops_shaft) if b.stops_shaft else ""
@@ -424,6 +496,7 @@ def format_report(report: Report) -> str:
                       f"{abs(r.mean_clearance) * 1000:.1f} um)"
                 lines.append(f"    {r.ring} ring on {r.seat}, {fit}: towards {_direction(-axis)} "
                              f"{_side_text(r.minus, report.search)}; towards {_direction(axis)} {_side_text(r.plus, report.search)}")
+            lines += [_shim_text(s) for s in b.shims]
         for p in j.problems:
             lines.append(f"  PROBLEM {p}")
     for p in report.problems:

@@ -102,11 +102,11 @@ def payloads(params: HeadParameters) -> list[tuple[str, str, MassProps]]:
         item = Node(entry, f"drive_sizing.payloads[{i}]", str(params.path))
         link = item.text("link")
         if link not in {params.joints[j].child for j in CHAIN_JOINTS}:
-            raise item._fail("link", f"{link!r} is not a moving link")
+            raise item.fail("link", f"{link!r} is not a moving link")
         m = item.num("mass", positive=True)
         a, b, c = item.vec("size")
         if min(a, b, c) <= 0:
-            raise item._fail("size", f"expected three positive lengths, got {[a, b, c]}")
+            raise item.fail("size", f"expected three positive lengths, got {[a, b, c]}")
         inertia = np.diag([m * (b * b + c * c), m * (a * a + c * c), m * (a * a + b * b)]) / 12
         out.append((item.text("name"), link, MassProps(m, np.array(item.vec("centre")), inertia)))
     return out

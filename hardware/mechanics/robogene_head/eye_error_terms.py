@@ -58,7 +58,7 @@ def wind_up(stiffness: Node, torque: float) -> float:
     if torque <= t1:
         return torque / k1
     if not stiffness.has("K2"):
-        raise stiffness._fail("K2", f"missing: {torque:.3g} N m is beyond T1 = {t1:g} N m")
+        raise stiffness.fail("K2", f"missing: {torque:.3g} N m is beyond T1 = {t1:g} N m")
     return t1 / k1 + (torque - t1) / stiffness.num("K2", positive=True)
 
 
@@ -117,7 +117,7 @@ def sensed_terms(params: HeadParameters, joint: str) -> list[Term]:
     homing = params.root.node("homing").node(joint)
     method = homing.text("method")
     if method != "absolute_encoder":
-        raise homing._fail("method", f"a pan read at the joint takes its zero from its sensor ({key}): expected "
+        raise homing.fail("method", f"a pan read at the joint takes its zero from its sensor ({key}): expected "
                                      f"'absolute_encoder', got {method!r}")
     sensor = params.purchased(key)
     rule = params.root.node("eye_accuracy").node("joint_sensor")
@@ -185,7 +185,7 @@ def terms(params: HeadParameters, joint: str, dynamic_Nm: float) -> list[Term]:
     homing = params.root.node("homing").node(joint)
     method = homing.text("method")
     if method != "hard_stop":
-        raise homing._fail("method", f"the eye budget counts hard_stop homing only, got {method!r}")
+        raise homing.fail("method", f"the eye budget counts hard_stop homing only, got {method!r}")
     t_home = homing_torque(params, joint)
     spread = params.root.node("eye_accuracy").num("homing_torque_spread", minimum=0, maximum=1)
     lug = math.degrees(t_home * stop_compliance(params))

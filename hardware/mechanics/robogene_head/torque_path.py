@@ -103,7 +103,7 @@ def _shaft(params: HeadParameters, joint: str, item: Node) -> float:
 def _count(item: Node, key: str) -> int:
     value = item.num(key, positive=True)
     if value != int(value):
-        raise item._fail(key, f"expected a whole number, got {value:g}")
+        raise item.fail(key, f"expected a whole number, got {value:g}")
     return int(value)
 
 
@@ -123,17 +123,17 @@ def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
     stock's that the joint's stage names (geometry.pulleys.<yaw|tilt>.belt); its pitch must be the one the CAD draws
     the stage's pulleys with (.pitch)."""
     if joint not in drive_limits.BELTED:
-        raise item._fail("element", f"{joint} has no belt stage")
+        raise item.fail("element", f"{joint} has no belt stage")
     node = params.geometry("pulleys", drive_limits.BELTED[joint])
     key = node.text("belt")
     stock = params.purchased(key)
     profile = stock.text("profile")
     if profile not in torque_elements.BELT_PITCH_MM:
-        raise stock._fail("profile", f"unknown belt profile {profile!r} (known: "
+        raise stock.fail("profile", f"unknown belt profile {profile!r} (known: "
                                      f"{', '.join(torque_elements.BELT_PITCH_MM)})")
     pitch = node.num("pitch", positive=True)
     if abs(pitch - torque_elements.BELT_PITCH_MM[profile]) > 1e-6:
-        raise node._fail("pitch", f"{pitch:g} mm is not the pitch of the {profile} belt {key} "
+        raise node.fail("pitch", f"{pitch:g} mm is not the pitch of the {profile} belt {key} "
                                   f"({torque_elements.BELT_PITCH_MM[profile]:g} mm)")
     motor, joint_teeth = int(node.num("motor_teeth", positive=True)), int(node.num("joint_teeth", positive=True))
     d_motor, d_joint = _pitch_diameter(node, motor), _pitch_diameter(node, joint_teeth)
@@ -146,7 +146,7 @@ def _belt(params: HeadParameters, joint: str, item: Node, at: str) -> float:
         rating = torque_elements.belt_rating(profile, d_small, stock.num("width", positive=True), in_mesh, rpm)
     except torque_elements.ElementError as exc:
         if exc.field:
-            raise stock._fail(exc.field, str(exc)) from None
+            raise stock.fail(exc.field, str(exc)) from None
         raise
     return rating * (d_motor if at == "gearhead" else d_joint) / d_small
 
@@ -160,13 +160,13 @@ def _coupling_rating(params: HeadParameters, item: Node, shaft: float) -> float 
     key = item.text("coupling")
     part = params.purchased(key)
     if part.text("kind") != "coupling":
-        raise item._fail("coupling", f"{key!r} is a {part.text('kind')}, expected a coupling")
+        raise item.fail("coupling", f"{key!r} is a {part.text('kind')}, expected a coupling")
     bores = part.raw("bores")
     if not isinstance(bores, list) or not bores or not all(
             isinstance(b, (int, float)) and not isinstance(b, bool) and b > 0 for b in bores):
-        raise part._fail("bores", f"expected a list of bore diameters (mm), got {bores!r}")
+        raise part.fail("bores", f"expected a list of bore diameters (mm), got {bores!r}")
     if not any(abs(b - shaft) < 1e-6 for b in bores):
-        raise item._fail("coupling", f"{key!r} has bores {bores}, none for the element's {shaft:g} mm shaft")
+        raise item.fail("coupling", f"{key!r} has bores {bores}, none for the element's {shaft:g} mm shaft")
     if not part.has("rated_torque_Nm"):
         return None
     return part.num("rated_torque_Nm", positive=True)
@@ -186,7 +186,7 @@ def capacity(params: HeadParameters, joint: str, item: Node, at: str) -> float:
             screw = item.text("screw")
             entry = params.purchased(screw)
             if entry.text("kind") != "set_screw":
-                raise item._fail("screw", f"{screw!r} is a {entry.text('kind')}, expected a set_screw")
+                raise item.fail("screw", f"{screw!r} is a {entry.text('kind')}, expected a set_screw")
             return torque_elements.set_screws(_count(item, "count"), entry.num("holding_force_N", positive=True),
                                               _shaft(params, joint, item))
         if kind == "d_flat":
@@ -203,27 +203,27 @@ def capacity(params: HeadParameters, joint: str, item: Node, at: str) -> float:
         if kind == "belt":
             return _belt(params, joint, item, at)
     except torque_elements.ElementError as exc:
-        raise item._fail("element", str(exc)) from None
-    raise item._fail("element", f"unknown element {kind!r}; known: {', '.join(ELEMENTS)}")
+        raise item.fail("element", str(exc)) from None
+    raise item.fail("element", f"unknown element {kind!r}; known: {', '.join(ELEMENTS)}")
 
 
 def analyse(params: HeadParameters) -> TorqueReport:
     paths = params.root.node("torque_paths")
     extra = sorted(set(paths.keys()) - set(CHAIN_JOINTS))
     if extra:
-        raise paths._fail(extra[0], "not a chain joint (" + ", ".join(CHAIN_JOINTS) + ")")
+        raise paths.fail(extra[0], "not a chain joint (" + ", ".join(CHAIN_JOINTS) + ")")
     peaks, checks = {}, []
     for joint in CHAIN_JOINTS:
         listed = paths.raw(joint)
         if not isinstance(listed, list) or not listed:
-            raise paths._fail(joint, "expected a list of the elements from the gearhead's output shaft to the link")
+            raise paths.fail(joint, "expected a list of the elements from the gearhead's output shaft to the link")
         p = peak(params, joint)
         peaks[joint] = p
         for i, entry in enumerate(listed):
             item = Node(entry, f"torque_paths.{joint}[{i}]", str(params.path))
             at = item.text("at")
             if at not in ("gearhead", "joint"):
-                raise item._fail("at", f"expected gearhead or joint, got {at!r}")
+                raise item.fail("at", f"expected gearhead or joint, got {at!r}")
             demand = p.at_gearhead * (p.belt if at == "joint" else 1.0)
             cap = capacity(params, joint, item, at)
             rated = _coupling_rating(params, item, _shaft(params, joint, item)) if item.text("element") == "clamp" \

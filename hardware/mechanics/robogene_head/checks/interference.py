@@ -39,7 +39,7 @@ FITS = [
     ("neck_pitch_hub_screw_*", "neck_pitch_gearhead"),   # the set screws' points on the gearhead's shaft
     ("neck_roll_hub_screw_*", "neck_roll_gearhead"),
     ("neck_yaw_bearing_*", "neck_roll_stage"),
-    ("neck_yaw_shim_*", "neck_yaw_bearing_*"),      # the shims on the shaft against the inner rings
+    ("neck_yaw_spacer_*", "neck_yaw_bearing_*"),    # the spacer rings on the shaft against the inner rings
     ("eyes_tilt_bearing_*", "eyes_tilt_frame"),
     ("eyes_tilt_clip", "eyes_tilt_bearing_right"),   # the clip on the journal against the fixed bearing's inner ring
     ("*_eye_pan_gearhead", "*_eye_hub"),              # the hub's bore on the pan shaft

@@ -94,7 +94,7 @@ def _unit(node: Node, key: str) -> np.ndarray:
     v = np.array(node.vec(key), dtype=float)
     n = float(np.linalg.norm(v))
     if n < 1e-9:
-        raise node._fail(key, "must not be the zero vector")
+        raise node.fail(key, "must not be the zero vector")
     return v / n
 
 
@@ -108,32 +108,32 @@ def _class(name: str, node: Node) -> CableClass:
         return CableClass(name, shape, node.num("bend_factor", positive=True), width=node.num("width", positive=True),
                           thickness=node.num("thickness", positive=True), edge_strain=node.num("edge_strain", positive=True),
                           inplane_factor=node.num("inplane_factor", positive=True))
-    raise node._fail("shape", f"expected round or flat, got {shape!r}")
+    raise node.fail("shape", f"expected round or flat, got {shape!r}")
 
 
 def _laid(node: Node) -> str:
     laid = node.text("laid")
     if laid not in ("loose", "twisted"):
-        raise node._fail("laid", f"expected loose or twisted, got {laid!r}")
+        raise node.fail("laid", f"expected loose or twisted, got {laid!r}")
     return laid
 
 
 def _names(node: Node, key: str, known: dict) -> tuple[str, ...]:
     value = node.raw(key) if node.has(key) else []
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-        raise node._fail(key, "expected a list of clamp names")
+        raise node.fail(key, "expected a list of clamp names")
     for v in value:
         if v not in known:
-            raise node._fail(key, f"{v!r} is not a clamp under harness.clamps")
+            raise node.fail(key, f"{v!r} is not a clamp under harness.clamps")
     return tuple(value)
 
 
 def _board_ref(node: Node, key: str, boards: list[str]) -> tuple[str, str]:
     value = node.raw(key)
     if not (isinstance(value, list) and len(value) == 2 and all(isinstance(v, str) for v in value)):
-        raise node._fail(key, f"expected [board name, connector reference], got {value!r}")
+        raise node.fail(key, f"expected [board name, connector reference], got {value!r}")
     if value[0] not in boards:
-        raise node._fail(key, f"{value[0]!r} is not one of boards.names ({', '.join(boards)})")
+        raise node.fail(key, f"{value[0]!r} is not one of boards.names ({', '.join(boards)})")
     return value[0], value[1]
 
 
@@ -150,10 +150,10 @@ def load(params: HeadParameters) -> HarnessSpec:
     for name in h.node("clamps").keys():
         c = h.node("clamps").node(name)
         if c.text("link") not in links:
-            raise c._fail("link", f"{c.text('link')!r} is not a link ({', '.join(sorted(links))})")
+            raise c.fail("link", f"{c.text('link')!r} is not a link ({', '.join(sorted(links))})")
         d, up = _unit(c, "dir"), _unit(c, "up")
         if abs(float(np.dot(d, up))) > 0.999:
-            raise c._fail("up", "must not be parallel to dir")
+            raise c.fail("up", "must not be parallel to dir")
         slack = c.num("slack", minimum=0) if c.has("slack") else None
         clamps[name] = Clamp(name, c.text("link"), np.array(c.vec("at"), dtype=float), d, up, slack)
     cables = []
@@ -163,7 +163,7 @@ def load(params: HeadParameters) -> HarnessSpec:
     for i, entry in enumerate(listed):
         c = Node(entry, f"harness.cables[{i}]", str(params.path))
         if c.text("class") not in classes:
-            raise c._fail("class", f"{c.text('class')!r} is not under harness.classes")
+            raise c.fail("class", f"{c.text('class')!r} is not under harness.classes")
         board, ref = _board_ref(c, "from", boards)
         to = c.raw("to")
         to = _board_ref(c, "to", boards) if isinstance(to, list) else c.text("to")
@@ -177,10 +177,10 @@ def load(params: HeadParameters) -> HarnessSpec:
     if (not isinstance(lengths, dict) or not lengths or
             not all(isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool) and v > 0
                     for k, v in lengths.items())):
-        raise cam._fail("lengths", "expected a mapping of catalog keys to their positive lengths (mm)")
+        raise cam.fail("lengths", "expected a mapping of catalog keys to their positive lengths (mm)")
     camera_class = next((c for c in classes.values() if c.shape == "flat"), None)
     if camera_class is None:
-        raise h._fail("classes", "the camera cables need a flat class")
+        raise h.fail("classes", "the camera cables need a flat class")
     cams = []
     for i, entry in enumerate(cam.raw("routes")):
         c = Node(entry, f"harness.camera_cables.routes[{i}]", str(params.path))

@@ -15,7 +15,7 @@ def build(params: HeadParameters, board: BoardModel) -> list[Part]:
     b = params.root.node("boards")
     names = b.raw("names")
     if not isinstance(names, list) or len(names) != int(b.num("count", positive=True)):
-        raise b._fail("names", f"expected a list of {int(b.num('count'))} board names")
+        raise b.fail("names", f"expected a list of {int(b.num('count'))} board names")
     ox, oy, oz = b.vec("origin")
     pitch = b.num("stack_pitch", positive=True)
     low, high = board.z_range

@@ -34,7 +34,7 @@ def stops_deg(params: HeadParameters, joint: str) -> tuple[float, float]:
     lo, hi = node.vec("stops_deg", 2)
     j = params.joints[joint]
     if not lo < j.lower < j.upper < hi:
-        raise node._fail("stops_deg", f"expected lower stop < {j.lower:g} and upper stop > {j.upper:g} (the joint's "
+        raise node.fail("stops_deg", f"expected lower stop < {j.lower:g} and upper stop > {j.upper:g} (the joint's "
                                       f"limits), got {[lo, hi]}")
     return lo, hi
 

@@ -95,7 +95,7 @@ def layout(params: HeadParameters, stage: Stage) -> Layout:
     gear = params.purchased(params.drive(stage.joint).text("gearhead"))
     shaft_free = gear.num("shaft_length", positive=True) - (c0 - face)
     if shaft_free < coupling.num("length") / 4:
-        raise n._fail("gap", f"leaves {shaft_free:g} mm of the {gear.num('shaft_length'):g} mm gearhead shaft in "
+        raise n.fail("gap", f"leaves {shaft_free:g} mm of the {gear.num('shaft_length'):g} mm gearhead shaft in "
                                   f"the coupling")
     pulley = stage.outer + mounts.plate_gap(params)
     hub = mounts.motor_hub(params, stage.joint)
@@ -113,7 +113,7 @@ def bearing_key(params: HeadParameters, stage: Stage) -> str:
     n = node(params, stage)
     key = n.text("bearing")
     if params.purchased(key).text("kind") != "bearing":
-        raise n._fail("bearing", f"{key!r} is not a bearing")
+        raise n.fail("bearing", f"{key!r} is not a bearing")
     return key
 
 
@@ -145,16 +145,16 @@ def housing(params: HeadParameters, stage: Stage) -> cq.Solid:
     # stands behind the housing (the yaw's, flanged ahead of the axis only)
     back = h.num("flange_back", minimum=0)
     if back > half:
-        raise h._fail("flange_back", f"{back:g} reaches behind the body's back ({half:g} behind the axis)")
+        raise h.fail("flange_back", f"{back:g} reaches behind the body's back ({half:g} behind the axis)")
     clamp, lug, split = h.num("clamp", positive=True), h.num("lug", positive=True), h.num("split", positive=True)
     gear = params.purchased(params.drive(stage.joint).text("gearhead"))
     bearing = params.purchased(bearing_key(params, stage))
     coupling = params.purchased(n.text("coupling"))
     cavity = h.num("cavity", positive=True)
     if cavity <= coupling.num("diameter", positive=True):
-        raise h._fail("cavity", f"{cavity:g} does not take the {coupling.num('diameter'):g} mm coupling")
+        raise h.fail("cavity", f"{cavity:g} does not take the {coupling.num('diameter'):g} mm coupling")
     if 2 * half - cavity < 2 or 2 * half <= gear.num("diameter") + 2:
-        raise h._fail("half", f"{half:g} leaves under 1 mm of wall round the cavity or the gearhead")
+        raise h.fail("half", f"{half:g} leaves under 1 mm of wall round the cavity or the gearhead")
     y0 = lay.gearhead_face - clamp
     x, z = lay.x, lay.z
     body = geom.union(geom.box(x - half, x + half, y0, lay.inner, z - half, z + half),
@@ -191,7 +191,7 @@ def _float_room(params: HeadParameters, stage: Stage) -> float:
     n = node(params, stage)
     room = n.num("float_room", positive=True)
     if room >= n.num("land"):
-        raise n._fail("float_room", f"{room:g} leaves no land of the {n.num('land'):g} for the fixed bearing")
+        raise n.fail("float_room", f"{room:g} leaves no land of the {n.num('land'):g} for the fixed bearing")
     return room
 
 
@@ -216,9 +216,9 @@ def jackshaft(params: HeadParameters, stage: Stage) -> cq.Solid:
     d, collar = s.num("diameter", positive=True), s.num("collar", positive=True)
     bearing = params.purchased(bearing_key(params, stage))
     if d != bearing.num("bore"):
-        raise s._fail("diameter", f"{d:g} is not the {bearing.num('bore'):g} mm bore of {n.text('bearing')}")
+        raise s.fail("diameter", f"{d:g} is not the {bearing.num('bore'):g} mm bore of {n.text('bearing')}")
     if not d < collar <= bearing.num("inner_ring_outside"):
-        raise s._fail("collar", f"{collar:g} must stand above the shaft and bear on the inner rings only (up to "
+        raise s.fail("collar", f"{collar:g} must stand above the shaft and bear on the inner rings only (up to "
                                 f"{bearing.num('inner_ring_outside'):g})")
     hub = mounts.motor_hub(params, stage.joint)
     shape = geom.union(geom.cyl("y", d, lay.shaft[0], lay.shaft[1], _at(lay)),
@@ -237,7 +237,7 @@ def coupling_shape(params: HeadParameters, stage: Stage) -> cq.Shape:
     screw = params.purchased(c.text("screw"))
     off, seat = c.num("offset", positive=True), c.num("seat", positive=True)
     if off - screw.num("diameter") / 2 <= large / 2:
-        raise c._fail("offset", f"{off:g} puts the M{screw.num('diameter'):g} screw into the {large:g} mm bore")
+        raise c.fail("offset", f"{off:g} puts the M{screw.num('diameter'):g} screw into the {large:g} mm bore")
     body = geom.cyl("z", d, 0, length)
     tools = [geom.cyl("z", small, -1, length / 2), geom.cyl("z", large, length / 2, length + 1)]
     for zc in (length / 4, 3 * length / 4):

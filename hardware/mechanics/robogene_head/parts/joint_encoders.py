@@ -64,7 +64,7 @@ def ends(params: HeadParameters) -> dict[str, End]:
     hw = params.geometry("head", "floor").num("half_width")
     tx, _, tz = params.joints["eyes_tilt"].origin
     bore = {j: params.purchased(params.drive(j).text("bearing")).num("bore", positive=True) for j in JOINTS}
-    # yaw: the fixed shaft stands through the bearings' boss, its ring and shim, to yaw_bearings.shaft_end
+    # yaw: the fixed shaft stands through the bearings' boss, its ring and spacer, to yaw_bearings.shaft_end
     ze = yaw_bearings.shaft_end(params)
     yaw_boss = yaw_bearings.layout(params).boss / 2
     # tilt: the right journal stands `protrusion` out of the fixed bearing's boss (tilt_bearings.shaft_end)

@@ -123,8 +123,30 @@ def rim(params: HeadParameters, joint: str) -> float:
     return (node if node.has("rim") else params.geometry("pulleys", "flange")).num("rim", positive=True)
 
 
-def flange_thickness(params: HeadParameters) -> float:
+def flange_thickness(params: HeadParameters, joint: str) -> float:
+    """Each of the stage's pulley flanges, thick: its own `flange_thickness` (a catalogue pulley's), else
+    pulleys.flange.thickness."""
+    node = stage(params, joint)
+    if node.has("flange_thickness"):
+        return node.num("flange_thickness", positive=True)
     return params.geometry("pulleys", "flange").num("thickness", positive=True)
+
+
+def belt_room(params: HeadParameters, joint: str) -> tuple[float, float, float]:
+    """(room, between, widest) in mm: the room the stage's widest belt (its stock's width plus its width_tolerance,
+    when the stock gives one) leaves between its pulleys' flanges, the flanges' distance apart and that width.
+    Refused when the belt does not run between them."""
+    key = belt_key(params, joint)
+    belt = params.purchased(key)
+    width = pulley_width(params, joint)
+    widest = belt.num("width", positive=True) + (belt.num("width_tolerance") if belt.has("width_tolerance") else 0.0)
+    f = flange_thickness(params, joint)
+    between = width - 2 * f
+    if widest > between + 1e-9:
+        raise ParameterError(f"{params.path}: purchased.{key}: a {widest:g} mm wide belt (at its widest) does not run "
+                             f"between the flanges of the {joint} stage's {width:g} mm pulleys ({f:g} thick, "
+                             f"{between:g} mm apart)")
+    return between - widest, between, widest
 
 
 def plate_gap(params: HeadParameters) -> float:
@@ -141,7 +163,7 @@ def pulley(params: HeadParameters, joint: str, teeth: int, bore: float) -> cq.Sh
     (a set-screw pulley's hub is joint_pulley's)."""
     width = pulley_width(params, joint)
     outside = pitch_diameter(params, joint, teeth) - pitch_differential(params)
-    flange, f = outside + 2 * rim(params, joint), flange_thickness(params)
+    flange, f = outside + 2 * rim(params, joint), flange_thickness(params, joint)
     body = geom.union(geom.cyl("z", flange, 0, f), geom.cyl("z", outside, f, width - f),
                       geom.cyl("z", flange, width - f, width))
     return geom.single_solid(geom.cut(body, geom.cyl("z", bore, -1, width + 1)), f"pulley_{teeth}T")
@@ -171,13 +193,13 @@ def joint_set_screw(params: HeadParameters, hub: Node | None = None) -> str:
     key = node.text("set_screw")
     screw = params.purchased(key)
     if screw.text("kind") != "set_screw":
-        raise node._fail("set_screw", f"{key!r} is a {screw.text('kind')}, expected a set_screw")
+        raise node.fail("set_screw", f"{key!r} is a {screw.text('kind')}, expected a set_screw")
     wall = node.num("wall", positive=True)
     if screw.num("length", positive=True) > wall:
-        raise node._fail("wall", f"{wall:g} is shorter than the {key} set screw ({screw.num('length'):g}), which "
+        raise node.fail("wall", f"{wall:g} is shorter than the {key} set screw ({screw.num('length'):g}), which "
                                  f"would stand out of the hub")
     if screw.num("diameter", positive=True) >= joint_hub_length(params, hub):
-        raise node._fail("length", f"{joint_hub_length(params, hub):g} leaves no metal around the {key} set "
+        raise node.fail("length", f"{joint_hub_length(params, hub):g} leaves no metal around the {key} set "
                                    f"screw's thread")
     return key
 
@@ -189,7 +211,7 @@ def set_screw_angles(params: HeadParameters, joint: str, hub: Node | None = None
     node, key = (joint_hub(params).node("set_screw_angles"), BELTED[joint]) if hub is None else (hub, "set_screw_angles")
     value = node.raw(key)
     if not isinstance(value, list) or not value:
-        raise node._fail(key, f"expected a list of angles (deg), got {value!r}")
+        raise node.fail(key, f"expected a list of angles (deg), got {value!r}")
     return list(node.vec(key, len(value)))
 
 
@@ -205,7 +227,7 @@ def flat_depth(params: HeadParameters, bore: float, hub: Node | None = None) -> 
     depth = node.num("flat_depth", positive=True)
     screw = params.purchased(joint_set_screw(params, hub)).num("diameter", positive=True)
     if depth >= bore / 2 or 2 * math.sqrt(bore * bore / 4 - (bore / 2 - depth) ** 2) < screw:
-        raise node._fail("flat_depth", f"{depth:g} on a {bore:g} mm shaft does not make a flat as wide as the "
+        raise node.fail("flat_depth", f"{depth:g} on a {bore:g} mm shaft does not make a flat as wide as the "
                                        f"M{screw:g} set screw")
     return depth
 
@@ -295,10 +317,7 @@ def belt_loop(params: HeadParameters, joint: str, centre_distance: float, teeth_
     back = belt.num("thickness", positive=True) - belt.num("tooth_height", positive=True)
     if back <= 0:
         raise ParameterError(f"{params.path}: purchased.{key}: thickness must exceed tooth_height (the belt's back)")
-    between = width - 2 * flange_thickness(params)
-    if belt_width > between:
-        raise ParameterError(f"{params.path}: purchased.{key}: a {belt_width:g} mm wide belt does not run between "
-                             f"the flanges of {width:g} mm pulleys ({between:g} mm apart)")
+    belt_room(params, joint)
     ra = (pitch_diameter(params, joint, teeth_a) - pitch_differential(params)) / 2
     rb = (pitch_diameter(params, joint, teeth_b) - pitch_differential(params)) / 2
     z0, z1 = (width - belt_width) / 2, (width + belt_width) / 2

@@ -30,7 +30,7 @@ def stops_deg(params: HeadParameters) -> tuple[float, float]:
     lo, hi = node.vec("stops_deg", 2)
     j = params.joints["eyes_tilt"]
     if not lo < j.lower < j.upper < hi:
-        raise node._fail("stops_deg", f"expected lower stop < {j.lower:g} and upper stop > {j.upper:g} (the joint's "
+        raise node.fail("stops_deg", f"expected lower stop < {j.lower:g} and upper stop > {j.upper:g} (the joint's "
                                       f"limits), got {[lo, hi]}")
     return lo, hi
 
@@ -60,7 +60,7 @@ def pin_centres(params: HeadParameters) -> list[tuple[float, float]]:
     half, z_low, _ = arm_section(params)
     depth = node.num("depth", positive=True)
     if not rp < depth < -z_low - rp:
-        raise node._fail("depth", f"{depth:g} puts the pins off the arm's faces (they run {-z_low:g} below the axis)")
+        raise node.fail("depth", f"{depth:g} puts the pins off the arm's faces (they run {-z_low:g} below the axis)")
     lo, hi = stops_deg(params)
     return [_rotate(lo, -(half + rp), -depth), _rotate(hi, half + rp, -depth)]
 
@@ -74,7 +74,7 @@ def pins(params: HeadParameters, inner: float, axis: tuple[float, float], link: 
     depth, length = node.num("pin_depth", positive=True), pin.num("length", positive=True)
     plate = params.geometry("head", "side_plate").num("thickness", positive=True)
     if not 0 < depth < min(length, plate):
-        raise node._fail("pin_depth", f"{depth:g}: a pin {length:g} long must stand out of a {plate:g} mm plate")
+        raise node.fail("pin_depth", f"{depth:g}: a pin {length:g} long must stand out of a {plate:g} mm plate")
     tx, tz = axis
     parts, holes = [], []
     for i, (x, z) in enumerate(pin_centres(params)):

@@ -30,7 +30,7 @@ def axis(params: HeadParameters) -> tuple[float, float]:
     n = params.geometry(KEY)
     x, y = n.vec("axis", 2)
     if math.hypot(x, y) == 0:
-        raise n._fail("axis", "lies on the yaw axis: the belt needs the two apart")
+        raise n.fail("axis", "lies on the yaw axis: the belt needs the two apart")
     return x, y
 
 
