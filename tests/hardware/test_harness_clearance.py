@@ -151,3 +151,13 @@ def test_a_clamp_inside_a_part_is_refused_and_one_on_its_face_is_not(params, bas
     assert any("clamp a: inside block (neck_base)" in p for p in c.problems)
     on_face = _box("block", "neck_base", (0, 0, -4), (8, 8, 8))        # its top face through clamp a
     assert {k.name: k for k in clearance.check(params, h, [on_face]).clamps}["a"].ok
+
+
+def test_the_check_leaves_the_parts_unmeshed(params, base):
+    """It meshes copies: a mesh left on a part's faces changes what BoundingBox() gives every later step of the
+    build, which would then depend on whether the harness step ran or was cached."""
+    ball = Part("ball", "ball", "neck_base", "machined", cq.Workplane().sphere(7).val(), loc(50, 30, 0))
+    before = ball.shape.BoundingBox()
+    clearance.check(params, _harness(base, _round(base)), [ball])
+    after = ball.shape.BoundingBox()
+    assert (after.xmin, after.xmax, after.zmax) == (before.xmin, before.xmax, before.zmax)

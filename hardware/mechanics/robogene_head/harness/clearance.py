@@ -119,7 +119,9 @@ class _Models:
         self.parts = [p for p in parts if p.kind != "board"]   # the boards sit in the bay, below every span
         self.part_models, by_link = [], {}
         for p in self.parts:
-            verts, tris = p.shape.tessellate(MESH_DEFLECTION, 0.3)
+            # A copy is meshed: a mesh left on the part's own faces would change what its BoundingBox() gives every
+            # later step of the build, and the harness step is skipped when its cache is fresh.
+            verts, tris = p.shape.copy().tessellate(MESH_DEFLECTION, 0.3)
             v = np.array([(q.x, q.y, q.z) for q in verts], dtype=float)
             t = np.array(tris, dtype=np.int32)
             self.part_models.append(_bvh(v, t))
