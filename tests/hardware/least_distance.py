@@ -14,27 +14,33 @@ import numpy as np
 from robogene_head.geom import distance, exact_bounds
 
 
+class Bounds:
+    """Each shape's exact bounds (lower corner, upper corner), taken once. The shapes are kept, so that the id a
+    bound is filed under is never reused by another shape (a part's .shape is a new object at each access)."""
+
+    def __init__(self):
+        self._seen: dict[int, tuple[cq.Shape, tuple[np.ndarray, np.ndarray]]] = {}
+
+    def __call__(self, shape: cq.Shape) -> tuple[np.ndarray, np.ndarray]:
+        if id(shape) not in self._seen:
+            self._seen[id(shape)] = (shape, exact_bounds(shape))
+        return self._seen[id(shape)][1]
+
+
 def box_gap(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray]) -> float:
     """The least distance between two axis-aligned boxes, each (lower corner, upper corner); 0 where they overlap."""
     (a_lo, a_hi), (b_lo, b_hi) = a, b
     return float(np.linalg.norm(np.maximum(0.0, np.maximum(a_lo - b_hi, b_lo - a_hi))))
 
 
-def least_distance(pairs: Iterable[tuple[cq.Shape, cq.Shape]]) -> float:
-    """min(distance(a, b) for a, b in pairs), exactly; each shape's bounds are taken once, however many pairs it is in."""
-    bounds: dict[int, tuple[np.ndarray, np.ndarray]] = {}
-
-    def bounds_of(shape: cq.Shape):
-        if id(shape) not in bounds:
-            bounds[id(shape)] = exact_bounds(shape)
-        return bounds[id(shape)]
-
-    pairs = list(pairs)
-    ranked = sorted(range(len(pairs)), key=lambda i: box_gap(bounds_of(pairs[i][0]), bounds_of(pairs[i][1])))
+def least_distance(pairs: Iterable[tuple[cq.Shape, cq.Shape]], bounds: Bounds | None = None) -> float:
+    """min(distance(a, b) for a, b in pairs), exactly. Pass the same `bounds` to calls that share shapes to take their
+    bounds once."""
+    bounds = Bounds() if bounds is None else bounds
+    gaps = [(box_gap(bounds(a), bounds(b)), a, b) for a, b in pairs]
     least = math.inf
-    for i in ranked:
-        a, b = pairs[i]
-        if box_gap(bounds_of(a), bounds_of(b)) >= least:
+    for gap, a, b in sorted(gaps, key=lambda g: g[0]):
+        if gap >= least:
             break
         least = min(least, distance(a, b))
     return least
