@@ -50,8 +50,12 @@ fab: $(FAB)/manifest.json
 test-head-model: $(VENV)/.stamp
 	$(PY) -m pytest -q -p no:cacheprovider tests/head_model
 
+# The hardware tests run on HW_TEST_JOBS workers (pytest-xdist; default: one per core, at most 4, each holds an
+# assembly of its own in memory; HW_TEST_JOBS=0 runs them in this process). A module goes to one worker whole
+# (--dist loadfile), so its module fixtures are built once.
+HW_TEST_JOBS ?= $(shell n=$$(nproc 2>/dev/null || echo 1); echo $$(( n < 4 ? n : 4 )))
 test-hardware: $(FAB)/manifest.json
-	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider tests/hardware
+	cd $(ROOT) && $(HW_PY) -m pytest -q -p no:cacheprovider -n $(HW_TEST_JOBS) --dist loadfile tests/hardware
 
 # The docs' copies of the package's pictures (docs/images/pictures.yaml; test_docs_pictures fails when one is stale)
 docs-pictures: $(FAB)/manifest.json
@@ -60,5 +64,6 @@ docs-pictures: $(FAB)/manifest.json
 HELP_LINES += "make fab        build the head's fabrication package into build/fab (STEP, STL, drawings, URDF, BOM, renders);" \
               "                BATCH=N prices the BOM for N heads" \
               "make test-hardware  CAD validity, interference, mesh, URDF-consistency and BOM tests" \
+              "                on HW_TEST_JOBS workers (default: one per core, at most 4; 0: one after another)" \
               "make test-head-model  the head model package shared by the CAD and the code generator" \
               "make docs-pictures  copy the package's renders the docs show into docs/images (docs/images/pictures.yaml)"

@@ -136,6 +136,10 @@ def test_renders_show_something(fab):
 # assembly grew (harness, stops, circlips), so it carries a longer timeout.
 @pytest.mark.timeout(600)
 def test_second_build_rebuilds_nothing(fab, tmp_path):
+    # The second build runs on a copy (its files' times kept): even a build that rebuilds nothing rewrites the reports
+    # and the manifest, which the tests running beside this one (pytest -n) read from the package.
+    original, fab = fab, tmp_path / "fab"
+    shutil.copytree(original, fab, symlinks=True)
     stamp = {p: p.stat().st_mtime_ns for p in fab.rglob("*") if p.is_file() and
              p.suffix in (".step", ".stl", ".svg", ".pdf", ".png", ".glb")}
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO / "hardware" / "head-model"), str(REPO / "hardware" / "mechanics"),

@@ -4,16 +4,15 @@
 what the CAD draws, the stage passes the torque-path check where a weakened variant (an MXL belt, a plain bore on
 the jackshaft) fails, what turns in the housing keeps the minimum clearance from what stands, the bearings get
 the fits of a turning shaft, and the housing slides in its slots to tension the belt."""
-import math
 
 import pytest
 
 from robogene_head import fits, torque_path
-from robogene_head.geom import distance
 from robogene_head.parts import head_frame, tilt_jackshaft
 from robogene_head.parts.base import loc
 
 import jackshaft_stage
+from least_distance import least_distance
 from param_variants import edited
 
 
@@ -82,13 +81,13 @@ STANDING = ("eyes_tilt_jackshaft_housing", "head_side_plate_left", "tilt_housing
 def _closest(params, parts):
     """The least distance between what turns with the jackshaft and what stands round it, over a turn."""
     lay = tilt_jackshaft.layout(params)
-    least = math.inf
+    pairs = []
     for angle in (0, 60, 120, 180, 240, 300):
         turn = loc(lay.x, 0, lay.z) * loc(ry=angle) * loc(-lay.x, 0, -lay.z)
         for a in TURNING:
-            for b in STANDING:
-                least = min(least, distance(parts[a].shape.moved(turn), parts[b].shape))
-    return least
+            turned = parts[a].shape.moved(turn)
+            pairs += [(turned, parts[b].shape) for b in STANDING]
+    return least_distance(pairs)
 
 
 def test_what_turns_in_the_housing_keeps_the_minimum_clearance(params, parts, tmp_path):
