@@ -15,6 +15,7 @@
 #include "../src/driver/robogene_can.hpp"
 #include "cli_head_session.hpp"
 #include "head_rig.hpp"
+#include "simulated_head_fixture.hpp"
 #include "robogene/can/joint_encoders.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
 #include "robogene/can/virtual_bus.hpp"
@@ -25,27 +26,13 @@ namespace {
 
 constexpr double kOneStep = 360.0 / 16384.0;  // the AS5048A's resolution, deg
 
-class JointEncoderHoming : public ::testing::Test {
+class JointEncoderHoming : public testing::SimulatedHeadOverBus {
  protected:
-  void SetUp() override {
-    head_ = testing::head_config();
-    sim_ = std::make_unique<sim::SimulatedHead>(head_, std::make_unique<VirtualBus>("head"));
-  }
-  void TearDown() override {
-    driver_.close();
-    sim_.reset();
-  }
-  void open() { ASSERT_TRUE(driver_.open(testing::driver_config("virtual:head"))) << driver_.last_error(); }
   double encoder(int j) {
     double v = 0;
     EXPECT_TRUE(testing::eventually(1.0, [&] { return driver_.getEncoder(j, v); })) << driver_.last_error();
     return v;
   }
-
-  testing::TempBusDir dir_;
-  HeadConfig head_;
-  std::unique_ptr<sim::SimulatedHead> sim_;
-  RobogeneCan driver_;
 };
 
 TEST_F(JointEncoderHoming, TheNeckAndTiltComeUpAtTheirTruePose) {

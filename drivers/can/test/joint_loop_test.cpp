@@ -21,6 +21,7 @@
 #include "board_sim_rig.hpp"
 #include "cli_head_session.hpp"
 #include "head_rig.hpp"
+#include "simulated_head_fixture.hpp"
 #include "robogene/can/sim/simulated_head.hpp"
 #include "robogene/can/virtual_bus.hpp"
 #include "robogene/log.hpp"
@@ -211,23 +212,7 @@ TEST(JointLoop, AnEncoderLostWhileRunningLeavesTheJointOnItsMotorEncoder) {
 
 // Over the bus: the driver reads the joints at their targets through the backlash, and a reversed encoder's stop is
 // refused by name.
-class JointLoopOverTheBus : public ::testing::Test {
- protected:
-  void SetUp() override {
-    head_ = testing::head_config();
-    sim_ = std::make_unique<sim::SimulatedHead>(head_, std::make_unique<VirtualBus>("head"));
-  }
-  void TearDown() override {
-    driver_.close();
-    sim_.reset();
-  }
-  void open() { ASSERT_TRUE(driver_.open(testing::driver_config("virtual:head"))) << driver_.last_error(); }
-
-  testing::TempBusDir dir_;
-  HeadConfig head_;
-  std::unique_ptr<sim::SimulatedHead> sim_;
-  RobogeneCan driver_;
-};
+class JointLoopOverTheBus : public testing::SimulatedHeadOverBus {};
 
 TEST_F(JointLoopOverTheBus, TheDriverReadsTheNeckAtItsTargetsThroughTheBacklash) {
   sim_->set_backlash(1, 0, kBacklash);  // neck pitch
