@@ -13,7 +13,6 @@ from pathlib import Path
 from robogene_head_model.params import HeadParameters
 
 from ..cache import Cache, digest
-from ..geom import exact_bounds
 from . import clearance, drawing, pinout, plan, report, spec
 
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))
@@ -25,16 +24,12 @@ class HarnessError(RuntimeError):
 
 def _key(params: HeadParameters, parts, catalog, geometry: str) -> str:
     """Everything the harness is made from: parameters, its code, the board's pinout sources, the catalog (the
-    drawings name the mating parts by MPN), where the parts it reaches sit, and every part's geometry and placement
-    (`geometry`, the caller's digest of them: the spans' clearance depends on all parts)."""
+    drawings name the mating parts by MPN), and every part's geometry, link and placement (`geometry`, the caller's
+    digest of them: the cables' far ends are parts' centres, and the spans' clearance depends on all parts)."""
     code = [hashlib.sha256(p.read_bytes()).hexdigest() for p in SOURCES]
     code.append(hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest())
     board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
-    centres = []
-    for p in parts:
-        lo, hi = exact_bounds(p.shape)
-        centres.append((p.name, p.link, *(round(float(c), 4) for c in (lo + hi) / 2)))
-    return digest(params.path.read_bytes(), code, board, centres, geometry)
+    return digest(params.path.read_bytes(), code, board, [p.name for p in parts], geometry)
 
 
 def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progress,
