@@ -5,7 +5,8 @@ present design passes (pitch and roll float their 61800s against the gearheads' 
 fixed and its floating 626, yaw its cross-located pair); the check fails, naming the joint and the bearing, on a 61800
 clamped again in its housing, a floating ring with no room, both 626 fixed, a tilt without a fixed bearing, a gearhead
 off the shaft's axis, a floating ring with a tight fit, and a shim that reaches over a bearing's seal or shield (the
-yaw's old DIN 988 15 x 21 shims on the 61802s' inner rings; a shim with too small a bore on the tilt's outer ring)."""
+yaw's old DIN 988 15 x 21 shims on the 61802s' inner rings; the tilt's old DIN 988 13 x 19 on the 626's outer ring,
+whose face starts at D2 16.5; a shim with too small a bore on an outer ring without D2, against the pitch circle)."""
 import json
 
 import numpy as np
@@ -112,8 +113,9 @@ def test_the_tilt_has_a_fixed_and_a_floating_626(report):
     right, left = _bearing(report, "eyes_tilt_bearing_right"), _bearing(report, "eyes_tilt_bearing_left")
     assert right.role == "fixed" and sorted(right.stops_shaft) == ["+axis", "-axis"]
     assert {right.inner.minus.stop, right.inner.plus.stop} == {"eyes_tilt_frame", "eyes_tilt_clip"}
-    # the shim between the outer ring and the DIN 472 ring is looked through: the ring is the stop
-    assert {right.outer.minus.stop, right.outer.plus.stop} == {"head_side_plate_right", "eyes_tilt_bearing_ring"}
+    # the outer ring between the plate's shoulder and the spacer ring (no shim in the stack: the spacer is the stop)
+    assert {right.outer.minus.stop, right.outer.plus.stop} == {"head_side_plate_right", "eyes_tilt_bearing_spacer"}
+    assert right.shims == [] and not right.outer.minus.through and not right.outer.plus.through
     assert left.role == "floating" and left.outer.minus.gap is None and left.outer.plus.gap is None
 
 
@@ -126,13 +128,11 @@ def test_yaw_is_cross_located(report):
     assert lower.shims == upper.shims == []
 
 
-def test_the_shims_beside_bearings_bear_on_their_rings(report):
-    """The one shim beside a bearing, the tilt's DIN 988 13 x 19 between the fixed 626's outer ring and its DIN 472
-    ring, bears on the outer ring's face (from the pitch circle, 12.5, out: the 626-2Z has no D2 in the catalogue)."""
-    [shim] = [s for j in report.joints for b in j.bearings for s in b.shims]
-    assert shim == arrangement.ShimFace("eyes_tilt_bearing_spacer", "din988-13x19x1", "outer", 13, 19, (12.5, 19), True)
-    assert "    shim eyes_tilt_bearing_spacer (din988-13x19x1, 13 x 19) on the outer ring, whose face is 12.5 to 19 " \
-           "across: bears on the ring alone" in arrangement.format_report(report).splitlines()
+def test_no_shim_bears_on_a_bearing(report):
+    """The shims beside bearings are all turned spacer rings now (the yaw's and the tilt's): none is left for
+    shim_faces to judge, and the report prints none."""
+    assert [s for j in report.joints for b in j.bearings for s in b.shims] == []
+    assert "    shim " not in arrangement.format_report(report)
 
 
 def test_the_old_din988_shims_on_the_yaw_reach_over_the_seals(tmp_path):
@@ -158,14 +158,51 @@ def test_the_old_din988_shims_on_the_yaw_reach_over_the_seals(tmp_path):
         arrangement.enforce(report)
 
 
-def test_a_shim_reaching_in_over_an_outer_rings_shield_fails(tmp_path):
-    """The tilt's shim with a 12 mm bore: it clears the inner ring (11) but lies inside the outer ring's face."""
+def _tilt_shim(params, key):
+    """The design's parts with a shim of `key` where the fixed tilt bearing's spacer ring is."""
+    parts = _parts(params)
+    [spacer] = [p for p in parts if p.name == "eyes_tilt_bearing_spacer"]
+    shim = purchased.shim(params, "eyes_tilt_bearing_shim", key, spacer.link, spacer.placement)
+    return [p for p in parts if p is not spacer] + [shim]
+
+
+DIN988_13X19 = {"kind": "shim", "bore": 13, "outside": 19, "thickness": 1.0, "mass": 0.0012}
+
+
+def test_the_old_din988_shim_on_the_tilt_reaches_over_the_shield(tmp_path):
+    """The tilt as it was: a DIN 988 13 x 19 shim where the spacer ring is, on the fixed 626's outer ring, whose face
+    starts at D2 16.5 (SKF): its 13 mm bore lies on the shield, which it would press onto the balls' cage."""
+    params = edited(tmp_path, lambda d: d["purchased"].update({"din988-13x19x1": dict(DIN988_13X19)}))
+    report = arrangement.analyse(params, _tilt_shim(params, "din988-13x19x1"))
+    assert report.failures == ["eyes_tilt: eyes_tilt_bearing_shim (din988-13x19x1, its bore 13) bears on "
+                               "eyes_tilt_bearing_right's outer ring, whose face starts at 16.5 (skf-626-2Z): it reaches "
+                               "in over the seal or shield; take a shim with a bore of at least 16.5"]
+    # the shim is looked through: the DIN 472 ring beyond it locates the outer ring, the bearing is still fixed
+    right = _bearing(report, "eyes_tilt_bearing_right")
+    assert right.role == "fixed" and right.outer.plus.stop == "eyes_tilt_bearing_ring"
+    assert right.outer.plus.through == ("eyes_tilt_bearing_shim",) and right.outer.plus.shim_gap == 0.0
+    assert right.shims == [arrangement.ShimFace("eyes_tilt_bearing_shim", "din988-13x19x1", "outer", 13, 19, (16.5, 19),
+                                                False)]
+    with pytest.raises(arrangement.BearingArrangementError, match="eyes_tilt_bearing_shim .* reaches in over the seal"):
+        arrangement.enforce(report)
+
+
+def test_without_d2_an_outer_rings_face_starts_at_the_pitch_circle(tmp_path):
+    """A 626 with no outer_ring_inside: the outer ring's face is taken from the pitch circle (12.5) out; the DIN 988
+    13 x 19 passes against it, a shim with a 12 mm bore (clear of the 11 mm inner ring) does not."""
     def edit(d):
-        d["purchased"]["shim-12x19x1"] = {"kind": "shim", "bore": 12, "outside": 19, "thickness": 1.0, "mass": 0.0013}
-        d["geometry"]["tilt_bearings"]["spacer"] = "shim-12x19x1"
+        del d["purchased"]["skf-626-2Z"]["outer_ring_inside"]
+        d["purchased"]["din988-13x19x1"] = dict(DIN988_13X19)
+        d["purchased"]["shim-12x19x1"] = dict(DIN988_13X19, bore=12)
     params = edited(tmp_path, edit)
-    report = arrangement.analyse(params, _parts(params))
-    assert report.failures == ["eyes_tilt: eyes_tilt_bearing_spacer (shim-12x19x1, its bore 12) bears on "
+    report = arrangement.analyse(params, _tilt_shim(params, "din988-13x19x1"))
+    assert report.ok, report.failures
+    assert _bearing(report, "eyes_tilt_bearing_right").shims == [
+        arrangement.ShimFace("eyes_tilt_bearing_shim", "din988-13x19x1", "outer", 13, 19, (12.5, 19), True)]
+    assert "    shim eyes_tilt_bearing_shim (din988-13x19x1, 13 x 19) on the outer ring, whose face is 12.5 to 19 " \
+           "across: bears on the ring alone" in arrangement.format_report(report).splitlines()
+    report = arrangement.analyse(params, _tilt_shim(params, "shim-12x19x1"))
+    assert report.failures == ["eyes_tilt: eyes_tilt_bearing_shim (shim-12x19x1, its bore 12) bears on "
                                "eyes_tilt_bearing_right's outer ring, whose face starts at 12.5 (skf-626-2Z): it reaches "
                                "in over the seal or shield; take a shim with a bore of at least 12.5"]
 
@@ -256,5 +293,4 @@ def test_the_package_reports_the_arrangement(fab):
         "eyes_tilt_jackshaft": "fixed + floating"}
     text = (fab / "reports" / "bearing-arrangement.txt").read_text()
     assert "neck_pitch_bearing_right (skf-61800-2RS): floating" in text
-    assert "shim eyes_tilt_bearing_spacer (din988-13x19x1, 13 x 19) on the outer ring, whose face is 12.5 to 19 across: " \
-           "bears on the ring alone" in text
+    assert "towards -y 0.00 mm to eyes_tilt_bearing_spacer" in text and "    shim " not in text

@@ -1,8 +1,9 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: BSD-3-Clause
 """The eye tilt on a fixed and a floating bearing: the right one held both ways in the right plate's boss (shoulder,
-shim and DIN 472 ring) and on the journal (collar and DIN 6799 clip), the left one against its journal's collar with
-its outer ring free to slide in the left plate's through-bore; the seat refuses what would rub or has no room."""
+spacer ring and DIN 472 ring) and on the journal (collar and DIN 6799 clip), the left one against its journal's collar
+with its outer ring free to slide in the left plate's through-bore; the seat refuses what would rub or has no room, and
+a spacer ring that could reach the shield or not go into the seat."""
 import pytest
 
 from robogene_head import bearing_arrangement as arrangement
@@ -25,13 +26,17 @@ def world(params):
 
 def test_the_fixed_bearing_is_held_both_ways(params, world):
     bearing, plate, frame = world["eyes_tilt_bearing_right"], world["head_side_plate_right"], world["eyes_tilt_frame"]
-    ring, shim, clip = world["eyes_tilt_bearing_ring"], world["eyes_tilt_bearing_spacer"], world["eyes_tilt_clip"]
-    # outer ring: against the plate's shoulder inside, the shim and the DIN 472 ring outside
+    ring, spacer, clip = world["eyes_tilt_bearing_ring"], world["eyes_tilt_bearing_spacer"], world["eyes_tilt_clip"]
+    # outer ring: against the plate's shoulder inside, the spacer ring and the DIN 472 ring outside
     assert distance(bearing, plate) < 1e-6 and bearing.intersect(plate).Volume() < 1e-3
-    thickness = params.purchased(params.geometry("tilt_bearings").text("spacer")).num("thickness")
+    inside, outside, thickness = tilt_bearings.layout(params).spacer
     assert distance(ring, bearing) == pytest.approx(thickness)
-    assert distance(shim, bearing) < 1e-6 and distance(ring, shim) < 1e-6
+    assert distance(spacer, bearing) < 1e-6 and distance(ring, spacer) < 1e-6
     assert ring.intersect(plate).Volume() < 1e-3
+    # the spacer bears on the outer ring's face alone (D2 16.5 out), inside the seat, clear of the plate's bore
+    assert params.purchased("skf-626-2Z").num("outer_ring_inside") == 16.5 < inside < outside < 19
+    assert spacer.BoundingBox().xlen == pytest.approx(outside)
+    assert spacer.intersect(plate).Volume() < 1e-3 and distance(spacer, plate) > 0
     # inner ring: against the journal's collar inside, the clip outside, the clip in its groove
     assert distance(bearing, frame) < 1e-6 and bearing.intersect(frame).Volume() < 1e-3
     assert distance(clip, bearing) < 1e-6 and clip.intersect(frame).Volume() < 1e-3
@@ -99,15 +104,31 @@ def _size_5_clip(data):
     data["geometry"]["tilt_bearings"]["clip"] = "din6799-5"
 
 
-def _wide_clip_thin_shim(data):
+def _wide_clip_thin_spacer(data):
     data["purchased"]["din6799-4"].update(outside_diameter=10.5, lug_outer_diameter=10.5)
-    data["geometry"]["tilt_bearings"]["spacer"] = "din988-13x19x0.5"
+    data["geometry"]["tilt_bearings"]["spacer"]["thickness"] = 0.5
+
+
+def _spacer(**kw):
+    return lambda data: data["geometry"]["tilt_bearings"]["spacer"].update(kw)
 
 
 @pytest.mark.parametrize("edit, message", [
     (_size_5_clip, r"geometry\.tilt_bearings\.clip: din6799-5 \(11\.3 across\) reaches beyond the skf-626-2Z's inner ring"),
-    (_wide_clip_thin_shim,
-     r"geometry\.tilt_bearings\.spacer: din988-13x19x0\.5 \(0\.5 thick\) leaves the din472-19x1 ring's lugs"),
+    (_wide_clip_thin_spacer,
+     r"geometry\.tilt_bearings\.spacer\.thickness: 0\.5 leaves the din472-19x1 ring's lugs"),
+    # a DIN 988 13 x 19's bore: over the shield at once
+    (_spacer(inside=13), r"geometry\.tilt_bearings\.spacer\.inside: 13 reaches in to 12\.379 \(ISO 2768-m, and shifted "
+                         r"by its 0\.421 mm of play in the 19 H7 seat\), over the skf-626-2Z's shield: its bore must "
+                         r"stay outside the outer ring's face, which starts at 16\.5"),
+    # 16.8 clears D2 as drawn, not at its smallest (16.6) pushed 0.421 to one side
+    (_spacer(inside=16.8), r"spacer\.inside: 16\.8 reaches in to 16\.179 .*0\.421 mm of play"),
+    # 19 across goes into the 19 mm seat as drawn, not at its largest (19.2)
+    (_spacer(outside=19), r"geometry\.tilt_bearings\.spacer\.outside: 19 \(up to 19\.2 to ISO 2768-m\) must go into the "
+                          r"19 mm seat"),
+    (_spacer(inside=17.2, outside=17.3), r"spacer\.outside: 17\.3 .* stay over the 17\.2 mm bore"),
+    (_spacer(thickness=0.2), r"din472-19x1 ring's lugs reach in to 10\.4, over the eyes_tilt bearing's inner ring \(11 "
+                             r"across\).*a spacer ring at least 0\.3 thick.*this one: 0\.2"),
     (lambda d: d["geometry"]["tilt_bearings"].update(collar=12), r"geometry\.tilt_bearings\.collar: 12 must be"),
     (lambda d: d["geometry"]["tilt_bearings"]["boss"].update(thickness=3),
      r"the wall holding the eyes_tilt bearing is 9 thick"),

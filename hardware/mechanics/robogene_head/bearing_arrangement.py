@@ -327,7 +327,7 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
                                     f"onto its shield or seal; put a spacer between them or take a smaller ring")
             else:
                 inside = fitted.num("lug_inner_diameter", positive=True)
-                edge = _face_edges(item)[1]
+                edge = face_edges(item)[1]
                 if inside < edge - 1e-9:
                     problems.append(f"{b.joint}: {stop.name} ({stop.design}, its lugs in to {inside:g} as fitted) bears on "
                                     f"{b.bearing}'s outer ring, whose face starts at {edge:g} ({b.key}): it reaches "
@@ -335,7 +335,7 @@ def ring_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
     return problems
 
 
-def _face_edges(item) -> tuple[float, float]:
+def face_edges(item) -> tuple[float, float]:
     """(inner ring's face outside, outer ring's face inside) in mm: where a bearing's seal or shield begins."""
     inside = item.num("outer_ring_inside") if item.has("outer_ring_inside") else \
         (item.num("bore") + item.num("outside")) / 2
@@ -351,7 +351,7 @@ def shim_faces(params: HeadParameters, b: BearingState, by_name: dict, located: 
     Records each shim on b.shims; returns the problems."""
     problems = []
     item = params.purchased(b.key)
-    inner_face, outer_face = _face_edges(item)
+    inner_face, outer_face = face_edges(item)
     for ring in (b.inner, b.outer):
         for side in (ring.minus, ring.plus):
             if not side.through or side.shim_gap is None or side.shim_gap > located:

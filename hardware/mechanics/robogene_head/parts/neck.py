@@ -33,12 +33,12 @@ FRONT_LUG_NOTE = ("2 x M3 tapped 8 deep (tap drill 2.5) in the bottom face, draw
 
 
 def clamped_seat(params: HeadParameters, joint: str, inner: float, outer: float, axis: str,
-                 at: tuple[float, float], shim_key: str) -> tuple[list, float, float, float]:
+                 at: tuple[float, float], spacer: float) -> tuple[list, float, float, float]:
     """Bore of a FIXED bearing's outer ring through a wall from `inner` to `outer` (coordinates along `axis`, either
-    order): a shoulder next to the inside, the bearing's seat, a shim ring against its outer ring, the retaining ring's
-    groove and a land outside it (geometry.bearing_seats). The shim keeps the retaining ring's lugs, which reach in over
-    the bearing's inner ring, off that ring, which turns while the retaining ring stands still. Returns the cutting
-    tools and where the bearing, the shim and the ring start (their inner faces) along the axis."""
+    order): a shoulder next to the inside, the bearing's seat, a spacer ring `spacer` thick against its outer ring, the
+    retaining ring's groove and a land outside it (geometry.bearing_seats). The spacer keeps the retaining ring's lugs,
+    which reach in over the bearing's inner ring, off that ring, which turns while the retaining ring stands still.
+    Returns the cutting tools and where the bearing, the spacer and the ring start (their inner faces) along the axis."""
     seats = params.geometry("bearing_seats")
     bearing = params.purchased(params.drive(joint).text("bearing"))
     ring = params.purchased(seats.text("bearing_ring"))
@@ -48,23 +48,18 @@ def clamped_seat(params: HeadParameters, joint: str, inner: float, outer: float,
                              f"{ring.num('bore'):g} mm bore, the {joint} bearing is {bo:g} outside")
     inner_ring = bearing.num("inner_ring_outside", positive=True)
     lugs = ring.num("lug_inner_diameter", positive=True)
-    shim = params.purchased(shim_key)
-    if shim.num("outside") > bo + 1e-9 or shim.num("bore") <= inner_ring:
-        raise ParameterError(f"{params.path}: the {joint} bearing's shim {shim_key} ({shim.num('bore'):g} x "
-                             f"{shim.num('outside'):g}) must fit the {bo:g} mm bore and clear the bearing's inner ring "
-                             f"({inner_ring:g} across)")
-    s = shim.num("thickness", positive=True)
+    s = spacer
     if lugs < inner_ring and s < LUG_GAP:
         raise ParameterError(f"{params.path}: the {seats.text('bearing_ring')} ring's lugs reach in to {lugs:g}, over the "
                              f"{joint} bearing's inner ring ({inner_ring:g} across), which turns while they stand still: "
-                             f"a shim ring at least {LUG_GAP:g} thick must keep them off it (this one: {s:g})")
+                             f"a spacer ring at least {LUG_GAP:g} thick must keep them off it (this one: {s:g})")
     sign = 1.0 if outer > inner else -1.0
     wall = abs(outer - inner)
     land, m = seats.num("land", positive=True), ring.num("groove_width", positive=True)
     shoulder = wall - bw - s - m - land
     if shoulder < 1.0:
         raise ParameterError(f"{params.path}: the wall holding the {joint} bearing is {wall:g} thick: it needs "
-                             f"{bw + s + m + land + 1:g} for the bearing, the shim, the ring's groove, the land and a "
+                             f"{bw + s + m + land + 1:g} for the bearing, the spacer, the ring's groove, the land and a "
                              f"1 mm shoulder")
     hole = seats.num("shoulder_hole", positive=True)
     if hole >= bo:
