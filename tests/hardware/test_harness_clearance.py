@@ -49,8 +49,9 @@ def _middle(params, h):
     """The span's curve at its middle sample, at rest, in the world (the neck base's frame): point, width direction."""
     a, b = h.spec.clamps["a"], h.spec.clamps["b"]
     poses = kinematics.link_poses(params, {})
-    c = clearance.spans.curve(plan.frame(poses[a.link], a), plan.frame(poses[b.link], b), 110.0, 81)
-    return c.points[40], c.widths[40]
+    c = clearance.spans.curve(plan.frame(poses[a.link], a), plan.frame(poses[b.link], b), 110.0)
+    middle = len(c.directions) // 2
+    return c.points[middle], c.widths[middle]
 
 
 def test_a_part_across_the_span_blocks_it_and_is_named(params, base):

@@ -32,7 +32,6 @@ from . import spans
 from .plan import Harness, Span, frame, sweep
 
 PACKING = 0.65            # share of a loose bundle's circle its wires fill
-SAMPLES = 81              # points along a span: segments of 1.25 % of its length
 MESH_DEFLECTION = 0.1     # mm, the parts' tessellation
 ON_FACE = 2 * MESH_DEFLECTION   # mm: a clamp this close to a part's mesh is on its face
 
@@ -183,9 +182,12 @@ def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
         flats = tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
         sc = SpanClearance(x, y, od, flats, 0)
         seen: set[tuple[str, str]] = set()
-        for angles, poses in sweep(params, span.joints, harness.spec.sweep_samples):
+        swept = list(sweep(params, span.joints, harness.spec.sweep_samples))
+        # The plan's curves, or (a span made by hand) the same curves worked out here.
+        curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in swept],
+                                             [frame(p[b.link], b) for _, p in swept], span.length)
+        for (angles, poses), c in zip(swept, curves):
             sc.poses += 1
-            c = spans.curve(frame(poses[a.link], a), frame(poses[b.link], b), span.length, SAMPLES)
             s = spans.arc_lengths(c)
             links = {link: fcl.CollisionObject(m, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
                      for link, m in models.links.items()}

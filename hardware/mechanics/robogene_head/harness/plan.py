@@ -46,6 +46,7 @@ class Span:
     checks: list[ClassCheck] = field(default_factory=list)
     cables: list[str] = field(default_factory=list)
     members: tuple[tuple[str, CableClass, int], ...] = ()     # (cable, class, wires) of each cable through it
+    curves: list = field(default_factory=list, repr=False)   # the modelled cable at each pose of the sweep, in order
 
 
 @dataclass
@@ -123,13 +124,11 @@ def check_span(params: HeadParameters, spec: HarnessSpec, a: Clamp, b: Clamp, us
     length = math.ceil(max_chord * (1 + slack) / LENGTH_STEP * 2) * LENGTH_STEP / 2   # to 5 mm
     span = Span(a.name, b.name, joints, len(frames), max_chord, length, cables=[u[0] for u in users],
                 members=tuple(users))
-    shapes = []
-    for angles, fa, fb in frames:
-        try:
-            shapes.append((angles, spans.shape(fa, fb, length)))
-        except ValueError as exc:
-            raise ParameterError(f"{params.path}: harness.clamps: span {a.name} -> {b.name} at "
-                                 f"{_pose_text(angles)}: {exc}") from None
+    try:
+        span.curves = spans.curves([fa for _, fa, _ in frames], [fb for _, _, fb in frames], length)
+    except ValueError as exc:
+        raise ParameterError(f"{params.path}: harness.clamps: span {a.name} -> {b.name}: {exc}") from None
+    shapes = [(angles, spans.measure(c, fb)) for (angles, _, fb), c in zip(frames, span.curves)]
     seen = set()
     for _, cls, wires in users:
         if (cls.name, wires) in seen:
