@@ -126,6 +126,17 @@ def test_the_package_reports_every_spans_clearance(fab, params):
     assert "Span clearance" in text
 
 
+def test_the_redesigned_loops_are_clear_of_the_parts(fab):
+    """The roll drive's loop across pitch and the pan drives' loops across tilt were laid out with this check
+    (docs/fabricate.md, "Wire the head"): in the package they are clear over their joints' range, each clamp held."""
+    cl = json.loads((fab / "harness" / "harness.json").read_text())["span_clearance"]
+    spans = {(s["from"], s["to"]): s for s in cl["spans"]}
+    clamps = {k["name"]: k for k in cl["clamps"]}
+    for a, b in (("roll_exit", "roll_feed"), ("tilt_feed_l", "tilt_arm_l"), ("tilt_feed_r", "tilt_arm_r")):
+        assert spans[(a, b)]["poses"] == 7 and spans[(a, b)]["blocked"] == [], (a, b)
+        assert clamps[a]["ok"] and clamps[b]["ok"]
+
+
 def test_a_clamp_must_be_held_by_a_part_of_its_link(params, base):
     standoff = params.root.node("harness").num("clamp_standoff")
     h = _harness(base, _round(base))
