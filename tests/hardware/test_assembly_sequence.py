@@ -14,12 +14,14 @@ import pytest
 import yaml
 
 from robogene_head import fab as fab_build
+from robogene_head import geom
 from robogene_head import sequence
 from robogene_head.assembly import Assembly
 from robogene_head.cache import Cache
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head_model.params import parse
 from robogene_head.parts import eyes, head_frame, neck
+from robogene_head.parts.base import Part, loc
 from robogene_head.progress import Progress
 
 from param_variants import edited
@@ -276,3 +278,16 @@ def test_a_set_screw_is_turned_from_its_socket_through_the_cups_access_hole(para
     assert report.problems and report.problems[0].step == "step 3 'set screws'"
     assert re.match(r"left_eye_hub_set_screw_0 \(hex-0.9\): the 2 mm tool along the axis hits left_eye_cup",
                     report.problems[0].what), report.problems[0].what
+
+
+def test_the_check_leaves_the_parts_unmeshed(params):
+    """It meshes copies: a mesh left on a part's faces (the placed shapes share them) changes what BoundingBox()
+    gives every later step of the build, which would then depend on whether this step ran or was cached."""
+    plate = Part("plate", "plate", "neck_base", "machined", geom.cyl("z", 40, 0, 5), loc(), material="aluminium-6082")
+    ball = Part("ball", "ball", "neck_base", "machined", geom.sphere(7), loc(0, 0, 12), material="aluminium-6082")
+    before = [p.shape.BoundingBox() for p in (plate, ball)]
+    steps = [{"name": "plate", "parts": ["plate"], "fixture": True},
+             {"name": "ball", "parts": ["ball"], "from": [[0, 0, 40]]}]
+    assert _check(params, [plate, ball], steps).ok
+    after = [p.shape.BoundingBox() for p in (plate, ball)]
+    assert [(b.xmin, b.xmax, b.zmin, b.zmax) for b in after] == [(b.xmin, b.xmax, b.zmin, b.zmax) for b in before]

@@ -69,3 +69,14 @@ def test_a_tight_gap_is_reported_low(params, assembly):
     report = interference.check(params, Assembly(params, _by_name(assembly, "neck_roll_stage") + [close]), [{}])
     assert [(r.a, r.b) for r in report.low] == [("neck_roll_stage", "close")]
     assert report.low[0].distance == pytest.approx(0.3, abs=1e-6)
+
+
+def test_the_check_leaves_the_parts_unmeshed(params):
+    """It meshes copies: a mesh left on a part's faces changes what BoundingBox() gives every later step of the
+    build, which would then depend on whether the interference step ran or was cached."""
+    ball = Part("ball", "ball", "head_frame", "machined", geom.sphere(7), loc(0, 0, 60), material="aluminium-6082")
+    peg = Part("peg", "peg", "neck_base", "machined", geom.cyl("z", 10, 0, 10), loc(), material="aluminium-6082")
+    before = [p.shape.BoundingBox() for p in (ball, peg)]
+    interference.check(params, Assembly(params, [ball, peg]), [{}])
+    after = [p.shape.BoundingBox() for p in (ball, peg)]
+    assert [(b.xmin, b.xmax, b.zmin, b.zmax) for b in after] == [(b.xmin, b.xmax, b.zmin, b.zmax) for b in before]

@@ -37,6 +37,7 @@ import cadquery as cq
 import fcl
 import numpy as np
 
+from .. import fcl_mesh
 from .. import fits as fits_mod
 from ..assembly import Assembly, Placed
 from .. import geom
@@ -103,13 +104,7 @@ class _World:
         self.placed: dict[str, Placed] = {p.part.name: p for p in assembly.pose({})}
         self.models, self.boxes, self.frames = {}, {}, {}
         for name, p in self.placed.items():
-            verts, tris = p.shape.tessellate(MESH_DEFLECTION, 0.3)
-            v = np.array([(q.x, q.y, q.z) for q in verts], dtype=float)
-            model = fcl.BVHModel()
-            model.beginModel(len(v), len(tris))
-            model.addSubModel(v, np.array(tris, dtype=np.int32))
-            model.endModel()
-            self.models[name] = model
+            self.models[name] = fcl_mesh.shape_bvh(p.shape, MESH_DEFLECTION, 0.3)
             bb = p.shape.BoundingBox()
             self.boxes[name] = (np.array([bb.xmin, bb.ymin, bb.zmin]), np.array([bb.xmax, bb.ymax, bb.zmax]))
             self.frames[name] = p.world @ placement_matrix(p.part.placement)
