@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from OCP.BRepMesh import BRepMesh_IncrementalMesh
 
 from robogene_head import fab as fab_build
 from robogene_head import geom
@@ -291,3 +292,23 @@ def test_the_check_leaves_the_parts_unmeshed(params):
     assert _check(params, [plate, ball], steps).ok
     after = [p.shape.BoundingBox() for p in (plate, ball)]
     assert [(b.xmin, b.xmax, b.zmin, b.zmax) for b in after] == [(b.xmin, b.xmax, b.zmin, b.zmax) for b in before]
+
+
+def test_a_mesh_left_on_the_parts_does_not_change_the_result(params):
+    """A part meshed earlier in the build (its STL, the assembly's GLB) is checked as one never meshed: the check meshes
+    copies at its own deflection and bounds the parts by their geometry. A ball lowered beside a post."""
+    def run(premeshed):
+        plate = Part("plate", "plate", "neck_base", "machined", geom.cyl("z", 60, 0, 5), loc(), material="aluminium-6082")
+        post = Part("post", "post", "neck_base", "machined", geom.cyl("z", 20, 5, 30), loc(18.5), material="aluminium-6082")
+        ball = Part("ball", "ball", "neck_base", "machined", geom.sphere(7), loc(0, 0, 20), material="aluminium-6082")
+        for p in (plate, post, ball) if premeshed else ():
+            BRepMesh_IncrementalMesh(p.local.wrapped, 0.01, False, 0.1, True).Perform()
+        steps = [{"name": "plate", "parts": ["plate"], "fixture": True},
+                 {"name": "post", "parts": ["post"], "from": [[0, 0, 40]]},
+                 {"name": "ball", "parts": ["ball"], "from": [[0, 0, 40]]}]
+        report = _check(params, [plate, post, ball], steps)
+        assert report.ok, chk.format_report(report)
+        return [(s.label, s.samples, s.closest, s.closest_to) for s in report.steps]
+    fresh = run(False)
+    assert fresh[2][3] == "ball x post" and 1.0 < fresh[2][2] < 1.5     # 1.5 mm apart, less the meshes' allowance
+    assert run(True) == fresh

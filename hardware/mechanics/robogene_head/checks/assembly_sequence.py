@@ -105,8 +105,9 @@ class _World:
         self.models, self.boxes, self.frames = {}, {}, {}
         for name, p in self.placed.items():
             self.models[name] = fcl_mesh.shape_bvh(p.shape, MESH_DEFLECTION, 0.3)
-            bb = p.shape.BoundingBox()
-            self.boxes[name] = (np.array([bb.xmin, bb.ymin, bb.zmin]), np.array([bb.xmax, bb.ymax, bb.zmax]))
+            # From the geometry alone: BoundingBox() bounds a triangulation when the part has one (the assembly's GLB
+            # export meshes every part when the geometry changed), and the check would depend on that.
+            self.boxes[name] = geom.exact_bounds(p.shape)
             self.frames[name] = p.world @ placement_matrix(p.part.placement)
 
     def obj(self, name: str, offset=np.zeros(3)) -> fcl.CollisionObject:
