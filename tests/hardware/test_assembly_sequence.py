@@ -298,9 +298,11 @@ def test_a_mesh_left_on_the_parts_does_not_change_the_result(params):
     """A part meshed earlier in the build (its STL, the assembly's GLB) is checked as one never meshed: the check meshes
     copies at its own deflection and bounds the parts by their geometry. A ball lowered beside a post."""
     def run(premeshed):
-        plate = Part("plate", "plate", "neck_base", "machined", geom.cyl("z", 60, 0, 5), loc(), material="aluminium-6082")
-        post = Part("post", "post", "neck_base", "machined", geom.cyl("z", 20, 5, 30), loc(18.5), material="aluminium-6082")
-        ball = Part("ball", "ball", "neck_base", "machined", geom.sphere(7), loc(0, 0, 20), material="aluminium-6082")
+        def part(name, shape, at):
+            return Part(name, name, "neck_base", "machined", shape, at, material="aluminium-6082")
+        plate = part("plate", geom.cyl("z", 60, 0, 5), loc())
+        post = part("post", geom.cyl("z", 20, 5, 30), loc(18.5))
+        ball = part("ball", geom.sphere(7), loc(0, 0, 20))
         for p in (plate, post, ball) if premeshed else ():
             BRepMesh_IncrementalMesh(p.local.wrapped, 0.01, False, 0.1, True).Perform()
         steps = [{"name": "plate", "parts": ["plate"], "fixture": True},

@@ -23,8 +23,8 @@ from robogene_head_model import joint_config
 from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
-from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fcl_mesh, fits, freecad, kinematics, massprops, openscad, render, render_steps,
-               sequence, threads, torque_path, unpowered, urdf)
+from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fcl_mesh, fits, freecad, kinematics,
+               massprops, openscad, render, render_steps, sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
