@@ -12,14 +12,17 @@ from pathlib import Path
 
 import pytest
 import yaml
+from OCP.BRepMesh import BRepMesh_IncrementalMesh
 
 from robogene_head import fab as fab_build
+from robogene_head import geom
 from robogene_head import sequence
 from robogene_head.assembly import Assembly
 from robogene_head.cache import Cache
 from robogene_head.checks import assembly_sequence as chk
 from robogene_head_model.params import parse
 from robogene_head.parts import eyes, head_frame, neck
+from robogene_head.parts.base import Part, loc
 from robogene_head.progress import Progress
 
 from param_variants import edited
@@ -276,3 +279,38 @@ def test_a_set_screw_is_turned_from_its_socket_through_the_cups_access_hole(para
     assert report.problems and report.problems[0].step == "step 3 'set screws'"
     assert re.match(r"left_eye_hub_set_screw_0 \(hex-0.9\): the 2 mm tool along the axis hits left_eye_cup",
                     report.problems[0].what), report.problems[0].what
+
+
+def test_the_check_leaves_the_parts_unmeshed(params):
+    """It meshes copies: a mesh left on a part's faces (the placed shapes share them) changes what BoundingBox()
+    gives every later step of the build, which would then depend on whether this step ran or was cached."""
+    plate = Part("plate", "plate", "neck_base", "machined", geom.cyl("z", 40, 0, 5), loc(), material="aluminium-6082")
+    ball = Part("ball", "ball", "neck_base", "machined", geom.sphere(7), loc(0, 0, 12), material="aluminium-6082")
+    before = [p.shape.BoundingBox() for p in (plate, ball)]
+    steps = [{"name": "plate", "parts": ["plate"], "fixture": True},
+             {"name": "ball", "parts": ["ball"], "from": [[0, 0, 40]]}]
+    assert _check(params, [plate, ball], steps).ok
+    after = [p.shape.BoundingBox() for p in (plate, ball)]
+    assert [(b.xmin, b.xmax, b.zmin, b.zmax) for b in after] == [(b.xmin, b.xmax, b.zmin, b.zmax) for b in before]
+
+
+def test_a_mesh_left_on_the_parts_does_not_change_the_result(params):
+    """A part meshed earlier in the build (its STL, the assembly's GLB) is checked as one never meshed: the check meshes
+    copies at its own deflection and bounds the parts by their geometry. A ball lowered beside a post."""
+    def run(premeshed):
+        def part(name, shape, at):
+            return Part(name, name, "neck_base", "machined", shape, at, material="aluminium-6082")
+        plate = part("plate", geom.cyl("z", 60, 0, 5), loc())
+        post = part("post", geom.cyl("z", 20, 5, 30), loc(18.5))
+        ball = part("ball", geom.sphere(7), loc(0, 0, 20))
+        for p in (plate, post, ball) if premeshed else ():
+            BRepMesh_IncrementalMesh(p.local.wrapped, 0.01, False, 0.1, True).Perform()
+        steps = [{"name": "plate", "parts": ["plate"], "fixture": True},
+                 {"name": "post", "parts": ["post"], "from": [[0, 0, 40]]},
+                 {"name": "ball", "parts": ["ball"], "from": [[0, 0, 40]]}]
+        report = _check(params, [plate, post, ball], steps)
+        assert report.ok, chk.format_report(report)
+        return [(s.label, s.samples, s.closest, s.closest_to) for s in report.steps]
+    fresh = run(False)
+    assert fresh[2][3] == "ball x post" and 1.0 < fresh[2][2] < 1.5     # 1.5 mm apart, less the meshes' allowance
+    assert run(True) == fresh

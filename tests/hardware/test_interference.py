@@ -7,9 +7,11 @@ its report is checked here, and a sweep of each joint's end stops is recomputed.
 to catch an overlap and an undeclared contact."""
 import json
 
+import numpy as np
 import pytest
+from OCP.BRepMesh import BRepMesh_IncrementalMesh
 
-from robogene_head import geom
+from robogene_head import geom, kinematics
 from robogene_head.assembly import Assembly
 from robogene_head.checks import interference
 from robogene_head.parts import Part
@@ -69,3 +71,34 @@ def test_a_tight_gap_is_reported_low(params, assembly):
     report = interference.check(params, Assembly(params, _by_name(assembly, "neck_roll_stage") + [close]), [{}])
     assert [(r.a, r.b) for r in report.low] == [("neck_roll_stage", "close")]
     assert report.low[0].distance == pytest.approx(0.3, abs=1e-6)
+
+
+def test_the_check_leaves_the_parts_unmeshed(params):
+    """It meshes copies: a mesh left on a part's faces changes what BoundingBox() gives every later step of the
+    build, which would then depend on whether the interference step ran or was cached."""
+    ball = Part("ball", "ball", "head_frame", "machined", geom.sphere(7), loc(0, 0, 60), material="aluminium-6082")
+    peg = Part("peg", "peg", "neck_base", "machined", geom.cyl("z", 10, 0, 10), loc(), material="aluminium-6082")
+    before = [p.shape.BoundingBox() for p in (ball, peg)]
+    interference.check(params, Assembly(params, [ball, peg]), [{}])
+    after = [p.shape.BoundingBox() for p in (ball, peg)]
+    assert [(b.xmin, b.xmax, b.zmin, b.zmax) for b in after] == [(b.xmin, b.xmax, b.zmin, b.zmax) for b in before]
+
+
+def test_a_mesh_left_on_the_parts_does_not_change_the_result(params):
+    """A part meshed earlier in the build (its STL, the assembly's GLB) is measured as one never meshed: the check
+    meshes copies at its own deflection. Two balls on two links 3 mm apart: a mesh distance, reported as such."""
+    poses = kinematics.link_poses(params, {})
+    a_world = poses["head_frame"] @ [0, 0, 60, 1]
+    b_local = np.linalg.inv(poses["neck_base"]) @ (a_world + [17, 0, 0, 0])     # radii 7 + 7 and a 3 mm gap
+
+    def run(premeshed):
+        a = Part("a", "a", "head_frame", "machined", geom.sphere(7), loc(0, 0, 60), material="aluminium-6082")
+        b = Part("b", "b", "neck_base", "machined", geom.sphere(7), loc(*b_local[:3]), material="aluminium-6082")
+        for p in (a, b) if premeshed else ():
+            BRepMesh_IncrementalMesh(p.local.wrapped, 0.01, False, 0.1, True).Perform()
+        report = interference.check(params, Assembly(params, [a, b]), [{}])
+        return [(r.a, r.b, r.distance) for r in report.clearances.values()]
+    fresh = run(False)
+    [(_, _, distance)] = fresh
+    assert distance == pytest.approx(3.0, abs=2 * interference.MESH_DEFLECTION)
+    assert run(True) == fresh

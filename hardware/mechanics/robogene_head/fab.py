@@ -23,8 +23,8 @@ from robogene_head_model import joint_config
 from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
-from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fits, freecad, kinematics, massprops, openscad, render, render_steps,
-               sequence, threads, torque_path, unpowered, urdf)
+from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fcl_mesh, fits, freecad, kinematics,
+               massprops, openscad, render, render_steps, sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
 from .cache import Cache, digest
@@ -258,8 +258,8 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
     # 7. Interference and clearance over the joint sweep (the slow step: cached on the geometry).
     inter_out = [out / "reports" / "interference.txt", out / "reports" / "interference.json"]
-    # A change to the checker itself must re-run it, as a change to the geometry does.
-    inter_key = digest(geometry_key, hashlib.sha256(Path(interference.__file__).read_bytes()).hexdigest(),
+    # A change to the checker itself (or to how it meshes the parts) must re-run it, as a change to the geometry does.
+    inter_key = digest(geometry_key, _source_hash(interference), _source_hash(fcl_mesh),
                        [(q.part.name, shape_hash(q.part.local), _placement_key(q.part)) for q in plugs])
     if not cache.fresh("interference", inter_key, inter_out):
         poses = interference.sweep_poses(params)
@@ -342,8 +342,8 @@ def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, asse
     with _fails_build(sequence.SequenceError):
         seq = sequence.load([p.name for p in assembly.parts], sequence_path)
     reports = [out / "reports" / "assembly.txt", out / "reports" / "assembly.json"]
-    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(sequence),
-                 _source_hash(fits), params.path.read_bytes())
+    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(fcl_mesh),
+                 _source_hash(sequence), _source_hash(fits), params.path.read_bytes())
     if not cache.fresh("assembly-sequence", key, reports):
         report = assembly_sequence.check(params, assembly, seq,
                                          progress=lambda i, n, label: progress.step("assembly", i, n, label))

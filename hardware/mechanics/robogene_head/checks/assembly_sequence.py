@@ -37,6 +37,7 @@ import cadquery as cq
 import fcl
 import numpy as np
 
+from .. import fcl_mesh
 from .. import fits as fits_mod
 from ..assembly import Assembly, Placed
 from .. import geom
@@ -103,15 +104,10 @@ class _World:
         self.placed: dict[str, Placed] = {p.part.name: p for p in assembly.pose({})}
         self.models, self.boxes, self.frames = {}, {}, {}
         for name, p in self.placed.items():
-            verts, tris = p.shape.tessellate(MESH_DEFLECTION, 0.3)
-            v = np.array([(q.x, q.y, q.z) for q in verts], dtype=float)
-            model = fcl.BVHModel()
-            model.beginModel(len(v), len(tris))
-            model.addSubModel(v, np.array(tris, dtype=np.int32))
-            model.endModel()
-            self.models[name] = model
-            bb = p.shape.BoundingBox()
-            self.boxes[name] = (np.array([bb.xmin, bb.ymin, bb.zmin]), np.array([bb.xmax, bb.ymax, bb.zmax]))
+            self.models[name] = fcl_mesh.shape_bvh(p.shape, MESH_DEFLECTION, 0.3)
+            # From the geometry alone: BoundingBox() bounds a triangulation when the part has one (the assembly's GLB
+            # export meshes every part when the geometry changed), and the check would depend on that.
+            self.boxes[name] = geom.exact_bounds(p.shape)
             self.frames[name] = p.world @ placement_matrix(p.part.placement)
 
     def obj(self, name: str, offset=np.zeros(3)) -> fcl.CollisionObject:

@@ -23,7 +23,7 @@ import numpy as np
 
 from robogene_head_model.params import CONTROL_JOINTS, HeadParameters
 
-from .. import geom
+from .. import fcl_mesh, geom
 from ..assembly import Assembly, Placed
 
 VOLUME_TOLERANCE = 0.5   # mm^3: below this a common volume is boolean noise on touching faces
@@ -105,14 +105,8 @@ class _Meshes:
     def __init__(self, parts):
         self.models, self.vertices = [], []
         for part in parts:
-            verts, tris = part.shape.tessellate(MESH_DEFLECTION, 0.2)
-            v = np.array([(p.x, p.y, p.z) for p in verts], dtype=float)
-            t = np.array(tris, dtype=np.int32)
-            model = fcl.BVHModel()
-            model.beginModel(len(v), len(t))
-            model.addSubModel(v, t)
-            model.endModel()
-            self.models.append(model)
+            v, t = fcl_mesh.triangles(part.shape, MESH_DEFLECTION, 0.2)
+            self.models.append(fcl_mesh.bvh(v, t))
             self.vertices.append(v)
 
     def objects(self, placed):

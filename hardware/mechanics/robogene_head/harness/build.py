@@ -12,10 +12,12 @@ from pathlib import Path
 
 from robogene_head_model.params import HeadParameters
 
+from .. import fcl_mesh
 from ..cache import Cache, digest
 from . import clearance, drawing, pinout, plan, report, spec
 
-SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py"))
+# its own code, and the part meshing its clearance check (clearance.py) uses
+SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py")) + [Path(fcl_mesh.__file__)]
 
 
 class HarnessError(RuntimeError):

@@ -28,6 +28,7 @@ import numpy as np
 
 from robogene_head_model.params import HeadParameters
 
+from .. import fcl_mesh
 from . import spans
 from .plan import Harness, Span, frame, sweep
 
@@ -118,25 +119,13 @@ class _Models:
         self.parts = [p for p in parts if p.kind != "board"]   # the boards sit in the bay, below every span
         self.part_models, by_link = [], {}
         for p in self.parts:
-            # A copy is meshed: a mesh left on the part's own faces would change what its BoundingBox() gives every
-            # later step of the build, and the harness step is skipped when its cache is fresh.
-            verts, tris = p.shape.copy().tessellate(MESH_DEFLECTION, 0.3)
-            v = np.array([(q.x, q.y, q.z) for q in verts], dtype=float)
-            t = np.array(tris, dtype=np.int32)
-            self.part_models.append(_bvh(v, t))
+            v, t = fcl_mesh.triangles(p.shape, MESH_DEFLECTION, 0.3)
+            self.part_models.append(fcl_mesh.bvh(v, t))
             acc = by_link.setdefault(p.link, ([], [], 0))
             acc[0].append(v)
             acc[1].append(t + acc[2])
             by_link[p.link] = (acc[0], acc[1], acc[2] + len(v))
-        self.links = {link: _bvh(np.vstack(v), np.vstack(t)) for link, (v, t, _) in by_link.items()}
-
-
-def _bvh(v: np.ndarray, t: np.ndarray):
-    m = fcl.BVHModel()
-    m.beginModel(len(v), len(t))
-    m.addSubModel(v, t)
-    m.endModel()
-    return m
+        self.links = {link: fcl_mesh.bvh(np.vstack(v), np.vstack(t)) for link, (v, t, _) in by_link.items()}
 
 
 def _basis(tangent: np.ndarray, width: np.ndarray) -> np.ndarray:
