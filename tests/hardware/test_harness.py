@@ -76,6 +76,11 @@ def test_the_modelled_cable_runs_from_clamp_to_clamp_at_its_length_and_bends_lea
 def test_a_span_shorter_than_its_clamps_apart_is_refused():
     with pytest.raises(ValueError, match="cannot reach"):
         spans.shape(_frame([0, 0, 0], [0, 0, 1], [1, 0, 0]), _frame([0, 0, 100], [0, 0, 1], [1, 0, 0]), 90.0)
+    # Over a sweep, the refusal names the pose it happens at (here the second of three).
+    near, far = _frame([0, 0, 0], [0, 0, 1], [1, 0, 0]), _frame([0, 0, 100], [0, 0, 1], [1, 0, 0])
+    with pytest.raises(spans.SpanError, match="cannot reach") as refused:
+        spans.curves([near, near, near], [_frame([0, 0, 50], [0, 0, 1], [1, 0, 0]), far, far], 90.0)
+    assert refused.value.pose == 1
 
 
 def test_the_heads_routes_pass(params, parts):

@@ -127,7 +127,8 @@ def check_span(params: HeadParameters, spec: HarnessSpec, a: Clamp, b: Clamp, us
     try:
         span.curves = spans.curves([fa for _, fa, _ in frames], [fb for _, _, fb in frames], length)
     except ValueError as exc:
-        raise ParameterError(f"{params.path}: harness.clamps: span {a.name} -> {b.name}: {exc}") from None
+        where = f" at {_pose_text(frames[exc.pose][0])}" if getattr(exc, "pose", None) is not None else ""
+        raise ParameterError(f"{params.path}: harness.clamps: span {a.name} -> {b.name}{where}: {exc}") from None
     shapes = [(angles, spans.measure(c, fb)) for (angles, _, fb), c in zip(frames, span.curves)]
     seen = set()
     for _, cls, wires in users:

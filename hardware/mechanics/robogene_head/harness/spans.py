@@ -29,6 +29,14 @@ GUESS_SAMPLES, GUESS_STEPS = 61, 12   # the first guess's length: to within abou
 PAY_OUT = (0.1, 0.25, 0.45, 0.7, 1.0)   # shares of the slack the cable is relaxed at in turn
 
 
+class SpanError(ValueError):
+    """A span's cable cannot be laid between its clamps; pose: the index of the pose where, when it is one pose's."""
+
+    def __init__(self, message: str, pose: int | None = None):
+        super().__init__(message)
+        self.pose = pose
+
+
 @dataclass(frozen=True)
 class Frame:
     """A clamp in the world: where the cable passes, its direction (unit) and its face normal (unit, across it)."""
@@ -210,10 +218,10 @@ class Curve:
 
 def curves(a: list[Frame], b: list[Frame], length: float, segments: int = SEGMENTS) -> list[Curve]:
     """The elastica `length` long from a[i] to b[i] in `segments` pieces, for each i (the span at each pose)."""
-    for p, q in zip(a, b):
+    for i, (p, q) in enumerate(zip(a, b)):
         chord = float(np.linalg.norm(q.at - p.at))
         if length < chord - 1e-9:
-            raise ValueError(f"a {length:.1f} mm span cannot reach between clamps {chord:.1f} mm apart")
+            raise SpanError(f"a {length:.1f} mm span cannot reach between clamps {chord:.1f} mm apart", i)
     # Two ways to the shape, and per pose the converged one of least energy: relaxed from the Hermite curve of the
     # full length, and paid out from nearly taut (relaxed at the chord plus a tenth of the slack from the Hermite
     # curve, which has no loops that short, then lengthened in steps, each relaxed from the last), the shape a cable
@@ -233,8 +241,8 @@ def curves(a: list[Frame], b: list[Frame], length: float, segments: int = SEGMEN
     gap = np.where(take_paid, paid_gap, direct_gap)
     worst = int(np.argmax(gap))
     if gap[worst] > 10 * TOLERANCE:
-        raise ValueError(f"no curve {length:.1f} mm long reaches between the clamps along their directions "
-                         f"(pose {worst + 1} of {len(a)}: {gap[worst]:.3f} mm short)")
+        raise SpanError(f"no curve {length:.1f} mm long reaches between the clamps along their directions (it ends "
+                        f"{gap[worst]:.3f} mm short)", worst)
     h = length / segments
     starts = np.array([p.dir / np.linalg.norm(p.dir) for p in a])
     ends = np.array([q.dir / np.linalg.norm(q.dir) for q in b])
