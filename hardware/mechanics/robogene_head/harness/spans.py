@@ -112,10 +112,11 @@ def _tangent_bases(d: np.ndarray) -> np.ndarray:
     return np.stack([u, np.cross(d, u)], axis=-1)
 
 
-def _relax(a: list[Frame], b: list[Frame], lengths: np.ndarray, start: np.ndarray):
-    """The pieces' directions of least bending energy, for every pair of clamps a[i], b[i] at once (start: their
-    first guesses, poses x pieces x 3; lengths: each pose's cable length), the far end on clamp B. Returns the
-    directions and how far each pose's curve ends from clamp B (mm).
+def _relax(starts: np.ndarray, ends: np.ndarray, targets: np.ndarray, lengths: np.ndarray, start: np.ndarray):
+    """The pieces' directions of least bending energy, for every pose's pair of clamps at once (starts, ends: the
+    clamps' unit directions, targets: B's place less A's, each poses x 3; start: the first guesses, poses x pieces x
+    3; lengths: each pose's cable length), the far end on clamp B. Returns the directions and how far each pose's
+    curve ends from clamp B (mm).
 
     The clamps hold the cable's direction at its ends: the turn from clamp A's direction to the first piece is taken
     over half a piece, as is the turn from the last piece to B's (the nodes are the pieces' ends). With the pieces'
@@ -127,9 +128,7 @@ def _relax(a: list[Frame], b: list[Frame], lengths: np.ndarray, start: np.ndarra
     than MAX_TURN, which keeps the first steps from a rough guess from overshooting."""
     poses, n = start.shape[:2]
     h = (lengths / n)[:, None, None]     # each pose's piece length, broadcast over pieces and coordinates
-    target = np.array([q.at - p.at for p, q in zip(a, b)])
-    before = 2 * np.array([p.dir / np.linalg.norm(p.dir) for p in a])[:, None, :]
-    after = 2 * np.array([q.dir / np.linalg.norm(q.dir) for q in b])[:, None, :]
+    before, after = 2 * starts[:, None, :], 2 * ends[:, None, :]
     d = start.copy()
     size = 2 * n + 3
     lam = np.zeros((poses, 3))
@@ -143,7 +142,7 @@ def _relax(a: list[Frame], b: list[Frame], lengths: np.ndarray, start: np.ndarra
         padded = np.concatenate([before, d, after], axis=1)
         grad = (-2 / h) * (padded[:, :-2] + padded[:, 2:]) + h * lam[:, None, :]   # Euclidean, of the Lagrangian
         g = np.einsum("pfk,pfkc->pfc", grad, t)                        # ... across each piece
-        c = h[:, 0] * d.sum(axis=1) - target
+        c = h[:, 0] * d.sum(axis=1) - targets
         diag = -np.sum(d * grad, axis=2)                               # the sphere's curvature term
         for axis in range(2):
             k[:, 2 * rows + axis, 2 * rows + axis] = diag
@@ -167,13 +166,17 @@ def _relax(a: list[Frame], b: list[Frame], lengths: np.ndarray, start: np.ndarra
         d = moved / np.linalg.norm(moved, axis=2, keepdims=True)
         if turn.max() < 1e-10 and np.abs(c).max() < TOLERANCE:
             break
-    return d, np.linalg.norm(h[:, 0] * d.sum(axis=1) - target, axis=1)
+    return d, np.linalg.norm(h[:, 0] * d.sum(axis=1) - targets, axis=1)
 
 
-def _energy(a: list[Frame], b: list[Frame], d: np.ndarray) -> np.ndarray:
-    """Each pose's bending energy, up to the factor 1/h its poses share."""
-    first = np.array([p.dir / np.linalg.norm(p.dir) for p in a])[:, None, :]
-    last = np.array([q.dir / np.linalg.norm(q.dir) for q in b])[:, None, :]
+def _directions(frames: list[Frame]) -> np.ndarray:
+    """The clamps' unit directions (poses x 3)."""
+    return np.array([f.dir / np.linalg.norm(f.dir) for f in frames])
+
+
+def _energy(starts: np.ndarray, ends: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """Each pose's bending energy, up to the factor 1/h its poses share (starts, ends: the clamps' unit directions)."""
+    first, last = starts[:, None, :], ends[:, None, :]
     return (np.sum(np.diff(d, axis=1) ** 2, axis=(1, 2)) + 2 * np.sum((d[:, :1] - first) ** 2, axis=(1, 2))
             + 2 * np.sum((last - d[:, -1:]) ** 2, axis=(1, 2)))
 
@@ -218,25 +221,26 @@ class Curve:
 
 def curves(a: list[Frame], b: list[Frame], length: float, segments: int = SEGMENTS) -> list[Curve]:
     """The elastica `length` long from a[i] to b[i] in `segments` pieces, for each i (the span at each pose)."""
-    for i, (p, q) in enumerate(zip(a, b)):
-        chord = float(np.linalg.norm(q.at - p.at))
-        if length < chord - 1e-9:
-            raise SpanError(f"a {length:.1f} mm span cannot reach between clamps {chord:.1f} mm apart", i)
+    targets = np.array([q.at - p.at for p, q in zip(a, b)])
+    chords = np.linalg.norm(targets, axis=1)
+    far = int(np.argmax(chords - length))
+    if length < chords[far] - 1e-9:
+        raise SpanError(f"a {length:.1f} mm span cannot reach between clamps {chords[far]:.1f} mm apart", far)
     # Two ways to the shape, and per pose the converged one of least energy: relaxed from the Hermite curve of the
     # full length, and paid out from nearly taut (relaxed at the chord plus a tenth of the slack from the Hermite
     # curve, which has no loops that short, then lengthened in steps, each relaxed from the last), the shape a cable
     # fed between the clamps takes. Either alone can end in a curled, higher-energy equilibrium, or not converge.
-    chords = np.array([float(np.linalg.norm(q.at - p.at)) for p, q in zip(a, b)])
-    full = np.full(len(a), float(length))
-    direct, direct_gap = _relax(a, b, full, np.array([_first_guess(p, q, length, segments) for p, q in zip(a, b)]))
+    starts, ends = _directions(a), _directions(b)
+    guesses = np.array([_first_guess(p, q, length, segments) for p, q in zip(a, b)])
+    direct, direct_gap = _relax(starts, ends, targets, np.full(len(a), float(length)), guesses)
     paid = None
     for share in PAY_OUT:
         lengths = chords + share * (length - chords)
         if paid is None:
             paid = np.array([_first_guess(p, q, float(l), segments) for p, q, l in zip(a, b, lengths)])
-        paid, paid_gap = _relax(a, b, lengths, paid)
+        paid, paid_gap = _relax(starts, ends, targets, lengths, paid)
     ok_direct, ok_paid = direct_gap <= 10 * TOLERANCE, paid_gap <= 10 * TOLERANCE
-    take_paid = ok_paid & (~ok_direct | (_energy(a, b, paid) < _energy(a, b, direct)))
+    take_paid = ok_paid & (~ok_direct | (_energy(starts, ends, paid) < _energy(starts, ends, direct)))
     d_all = np.where(take_paid[:, None, None], paid, direct)
     gap = np.where(take_paid, paid_gap, direct_gap)
     worst = int(np.argmax(gap))
@@ -244,8 +248,6 @@ def curves(a: list[Frame], b: list[Frame], length: float, segments: int = SEGMEN
         raise SpanError(f"no curve {length:.1f} mm long reaches between the clamps along their directions (it ends "
                         f"{gap[worst]:.3f} mm short)", worst)
     h = length / segments
-    starts = np.array([p.dir / np.linalg.norm(p.dir) for p in a])
-    ends = np.array([q.dir / np.linalg.norm(q.dir) for q in b])
     normals = _carried(np.array([p.up for p in a]), starts, d_all)
     return [Curve(p.at + np.vstack([np.zeros(3), np.cumsum(h * d, axis=0)]), d, n, np.cross(d, n), h, s, e)
             for p, d, n, s, e in zip(a, d_all, normals, starts, ends)]
