@@ -111,10 +111,10 @@ def test_a_twisted_group_is_held_to_its_group_diameter(params, parts, tmp_path):
 
 def test_a_twist_over_its_limit_fails_the_check(params, parts, tmp_path):
     def stiff(data):
-        data["harness"]["classes"]["signal-28awg"]["twist_deg_per_m"] = 100   # yaw twists the neck loop ~190 deg/m
+        data["harness"]["classes"]["signal-28awg"]["twist_deg_per_m"] = 100   # roll twists its loop ~135 deg/m
     p2 = edited(tmp_path, stiff)
     h = plan.plan(p2, spec.load(p2), parts)
-    assert any("span bay_exit -> head_entry" in p and "signal-28awg twists" in p and "limit is 100 deg/m" in p
+    assert any("span roll_cross -> roll_land" in p and "signal-28awg twists" in p and "limit is 100 deg/m" in p
                for p in h.problems), h.problems
 
 
@@ -132,31 +132,29 @@ def test_a_flat_cable_bent_in_its_own_plane_fails(params, parts, tmp_path):
 def test_free_lengths_come_from_the_sweep(params, parts, tmp_path):
     s = spec.load(params)
     h = plan.plan(params, s, parts)
-    neck_span = h.spans[("bay_exit", "head_entry")]
-    assert neck_span.joints == ("neck_pitch", "neck_roll", "neck_yaw") and neck_span.poses == s.sweep_samples ** 3
-    assert neck_span.length == math.ceil(neck_span.max_chord * (1 + s.free_slack) / 5) * 5
+    yaw_span = h.spans[("yaw_cross", "head_entry")]
+    assert yaw_span.joints == ("neck_yaw",) and yaw_span.poses == s.sweep_samples
+    assert yaw_span.length == math.ceil(yaw_span.max_chord * (1 + s.free_slack) / 5) * 5
 
     # The longest chord is the clamps' greatest distance over the sampled poses, recomputed here from the kinematics.
     from robogene_head import kinematics
-    a, b = s.clamps["bay_exit"], s.clamps["head_entry"]
-    grid = [np.linspace(params.joints[j].lower, params.joints[j].upper, s.sweep_samples) for j in neck_span.joints]
+    a, b = s.clamps["yaw_cross"], s.clamps["head_entry"]
     chords = []
-    for values in np.array(np.meshgrid(*grid)).reshape(len(grid), -1).T:
-        poses = kinematics.link_poses(params, dict(zip(neck_span.joints, values)))
+    for value in np.linspace(params.joints["neck_yaw"].lower, params.joints["neck_yaw"].upper, s.sweep_samples):
+        poses = kinematics.link_poses(params, {"neck_yaw": value})
         pa = poses[a.link][:3, :3] @ a.at + poses[a.link][:3, 3]
         pb = poses[b.link][:3, :3] @ b.at + poses[b.link][:3, 3]
         chords.append(np.linalg.norm(pb - pa))
-    assert neck_span.max_chord == pytest.approx(max(chords), abs=1e-9) and max(chords) > min(chords) + 5
+    assert yaw_span.max_chord == pytest.approx(max(chords), abs=1e-9) and max(chords) > min(chords) + 5
 
-    def narrow(data):   # the neck held still: the span is cut to its rest chord
-        for i, j in enumerate(("neck_pitch", "neck_roll", "neck_yaw")):
-            data["joints"][j]["min"], data["joints"][j]["max"] = -0.5, 0.5
-            data["control_joints"][i]["min"], data["control_joints"][i]["max"] = -0.5, 0.5
+    def narrow(data):   # yaw held still: its span is cut to its rest chord
+        data["joints"]["neck_yaw"]["min"], data["joints"]["neck_yaw"]["max"] = -0.5, 0.5
+        data["control_joints"][2]["min"], data["control_joints"][2]["max"] = -0.5, 0.5
     p2 = edited(tmp_path, narrow)
     h2 = plan.plan(p2, spec.load(p2), parts)
-    assert h2.spans[("bay_exit", "head_entry")].max_chord < neck_span.max_chord - 4
-    assert h2.spans[("bay_exit", "head_entry")].length < neck_span.length
-    # every cable across the neck follows, though a 5 mm shorter span can vanish in a cable's rounding to 10 mm
+    assert h2.spans[("yaw_cross", "head_entry")].max_chord < yaw_span.max_chord - 4
+    assert h2.spans[("yaw_cross", "head_entry")].length < yaw_span.length
+    # every cable across yaw follows, though a 5 mm shorter span can vanish in a cable's rounding to 10 mm
     cut = {c.name: c.length for c in h.cables}
     across = [c for c in h2.cables if "head_entry" in c.via]
     assert all(c.length <= cut[c.name] for c in across) and any(c.length < cut[c.name] for c in across)
@@ -238,6 +236,27 @@ def test_the_build_stops_on_a_violation(params, parts, tmp_path):
     assert "FAILED" in (tmp_path / "fab" / "reports" / "harness.txt").read_text()
 
 
+def test_the_build_stops_on_a_span_through_a_part(params, parts, tmp_path):
+    """The route the head's wires took before (one loop from the bay across pitch, roll and yaw to a tie under the
+    floor beside the yaw axis) passes through the roll drive: the parts in its way stop the build, named."""
+    from robogene_bom import catalog
+    from robogene_head.cache import Cache
+    from robogene_head.progress import Progress
+
+    def unnamed(data):
+        h = data["harness"]
+        h["clamps"]["head_entry"] = {"link": "head_frame", "at": [-10, 0, -5], "dir": [1, 0, 0], "up": [0, 0, -1]}
+        for c in h["cables"]:
+            if "roll_land" in c.get("via", []):
+                c["via"] = ["bay_exit", "head_entry"] + c["via"][6:]
+    with pytest.raises(harness_build.HarnessError,
+                       match=r"(?s)harness check failed.*span bay_exit -> head_entry: the round wires \(bundle .* mm\) "
+                             r"pass through neck_roll_gearhead \(neck_pitch_link\)"):
+        harness_build.build(edited(tmp_path, unnamed), parts, tmp_path / "fab", Cache(tmp_path / "state.json"),
+                            catalog.load(), Progress(open("/dev/null", "w")), "geometry")
+    assert "NOT MET (the build stops)" in (tmp_path / "fab" / "reports" / "harness.txt").read_text()
+
+
 def test_package_holds_the_harness(fab, params):
     data = json.loads((fab / "harness" / "harness.json").read_text())
     assert data["ok"] and not data["problems"]
@@ -246,6 +265,7 @@ def test_package_holds_the_harness(fab, params):
         for ext in ("yml", "svg", "png", "html", "bom.tsv"):
             assert (fab / "harness" / f"{stem}.{ext}").stat().st_size > 0
     assert "OK: every span" in (fab / "reports" / "harness.txt").read_text()
+    assert (fab / "harness" / "harness-eyes.png").stat().st_size > 0
     rows = {r["key"]: r for r in csv.DictReader((fab / "bom" / "robogene-head-bom.csv").open())}
     # Housings: one per crimped end; contacts: one per wire end; wire by the metre.
     expected = {}
@@ -255,7 +275,7 @@ def test_package_holds_the_harness(fab, params):
         assert float(rows[key]["qty_per_head"]) == pytest.approx(qty, abs=0.006), key
     ends = [c for c in data["cables"] if c["header"] == "B4B-PH-K-S(LF)(SN)"]
     assert expected["jst-PHR-4"] == len(ends) and rows["wire-28awg-ptfe"]["unit"] == "m"
-    assert expected["rpi-camera-cable-500"] == 2
+    assert expected["rpi-camera-cable-300"] == 2 and "rpi-camera-cable-500" not in expected
     for key in ("meanwell-GST90A12-P1M", "canable-2.0", "raspberrypi-SC1112"):
         assert rows[key]["qty_per_head"] == "1"
     assert rows["pcb-assembly-motor-board"]["qty_per_head"] == str(int(params.root.node("boards").num("count")))

@@ -3,7 +3,8 @@
 """The spans' clearance of the parts: a part across a span's curve blocks it, and is named; moved aside it does not;
 the clamp's own link may touch the cables within clamp_zone of the clamp, any other part may not; the bundle's
 diameter grows with its wires; flat cables are checked as bands; a clamp must lie on or near a part of its own link,
-not inside one; the package reports it for every span and every clamp."""
+not inside one; the package reports it for every span and every clamp; the build stops on a blocked span but those
+harness.unresolved names, and on a named one that is clear."""
 import dataclasses
 import json
 
@@ -15,6 +16,9 @@ from robogene_head import kinematics
 from robogene_head.harness import clearance, plan, spec
 from robogene_head.harness.plan import Harness, Span
 from robogene_head.parts.base import Part, loc
+from robogene_head_model.params import ParameterError
+
+from param_variants import edited
 
 
 def _box(name, link, at, size=(6, 6, 6)):
@@ -117,24 +121,79 @@ def test_a_flat_cable_is_checked_across_its_width(params, base):
 def test_the_package_reports_every_spans_clearance(fab, params):
     data = json.loads((fab / "harness" / "harness.json").read_text())
     cl = data["span_clearance"]
-    assert cl["enforced"] is False
+    assert cl["enforced"] is True and cl["ok"] is True and cl["problems"] == []
     assert {(s["from"], s["to"]) for s in cl["spans"]} == {(s["from"], s["to"]) for s in data["spans"]}
     assert all(s["poses"] >= 1 for s in cl["spans"])
     assert {k["name"] for k in cl["clamps"]} == set(params.root.node("harness").raw("clamps"))
-    assert cl["ok"] == (not cl["problems"])
-    text = (fab / "reports" / "harness.txt").read_text()
-    assert "Span clearance" in text
+    assert "Span clearance" in (fab / "reports" / "harness.txt").read_text()
 
 
-def test_the_redesigned_loops_are_clear_of_the_parts(fab):
-    """The roll drive's loop across pitch and the pan drives' loops across tilt were laid out with this check
-    (docs/fabricate.md, "Wire the head"): in the package they are clear over their joints' range, each clamp held."""
+def test_every_span_is_clear_of_the_parts(fab):
+    """The routes were laid out with this check (docs/fabricate.md, "Wire the head"): in the package every free
+    span is clear over its joints' range and every clamp held, and harness.unresolved names none. The neck crosses
+    pitch, roll and yaw in a loop each; the camera cables cross each pan and the tilt in loops of their own, joined on
+    the cable shelf."""
     cl = json.loads((fab / "harness" / "harness.json").read_text())["span_clearance"]
     spans = {(s["from"], s["to"]): s for s in cl["spans"]}
-    clamps = {k["name"]: k for k in cl["clamps"]}
-    for a, b in (("roll_exit", "roll_feed"), ("tilt_feed_l", "tilt_arm_l"), ("tilt_feed_r", "tilt_arm_r")):
-        assert spans[(a, b)]["poses"] == 7 and spans[(a, b)]["blocked"] == [], (a, b)
-        assert clamps[a]["ok"] and clamps[b]["ok"]
+    assert cl["unresolved"] == [] and cl["known"] == []
+    assert set(spans) == {("roll_exit", "roll_feed"), ("roll_cross", "roll_land"), ("yaw_cross", "head_entry"),
+                          ("tilt_feed_l", "tilt_arm_l"), ("tilt_feed_r", "tilt_arm_r"), ("eye_l", "pan_feed_l"),
+                          ("eye_r", "pan_feed_r"), ("cam_arm_l", "cam_feed_l"), ("cam_arm_r", "cam_feed_r")}
+    for key, span in spans.items():
+        assert span["blocked"] == [] and span["poses"] == 7, key
+    assert all(k["ok"] for k in cl["clamps"])
+
+
+def test_the_eyes_camera_loops_keep_to_their_own_sides(params, base):
+    """The build checks each span against the parts, not against other cables: the two camera cables' loops about the
+    pan axes, which both end on the cable shelf between the eyes, are laid so that each stays on its own eye's side
+    of the middle over its whole pan range, with room for the cables' thickness, so they never meet whatever the
+    vergence."""
+    for side, sign in (("l", 1), ("r", -1)):
+        a, b = base.clamps[f"eye_{side}"], base.clamps[f"pan_feed_{side}"]
+        span = plan.check_span(params, base, a, b, [("camera", base.classes["camera-ffc"], 1)])
+        assert span.joints == (f"{'left' if side == 'l' else 'right'}_eye_pan",) and len(span.curves) == 7
+        nearest = min(float(np.min(sign * c.points[:, 1])) for c in span.curves)
+        assert nearest > 1.0, (side, nearest)
+
+
+def _named(params, tmp_path, entries, h):
+    def edit(data):
+        data["harness"]["unresolved"] = entries
+    return clearance.unresolved(edited(tmp_path, edit), h)
+
+
+def test_a_blocked_span_stops_the_build_unless_named_and_a_named_clear_one_does_too(params, base, tmp_path):
+    """A span through a part is a problem (the build stops on it); named in harness.unresolved it is reported as
+    known instead; a named span that is clear is a problem again, so the list cannot outlive what it names."""
+    h = _harness(base, _round(base))
+    mid, _ = _middle(params, h)
+    holders = [_box("holds_a", "neck_base", (0, 0, -4), (4, 4, 4)),
+               _box("holds_b", "neck_base", (100, 20, -4), (4, 4, 4))]
+    blocking = holders + [_box("across", "neck_base", mid)]
+    bare = clearance.check(params, h, blocking)
+    assert not bare.ok and any("pass through across" in p for p in bare.problems)
+    (tmp_path / "named").mkdir()
+    why = _named(params, tmp_path / "named", [{"from": "a", "to": "b", "why": "being redesigned"}], h)
+    assert why == {("a", "b"): "being redesigned"}
+    named = clearance.check(params, h, blocking, why)
+    assert named.ok and named.problems == [] and any("across" in line for line in named.known)
+    assert not any(s.ok for s in named.spans)
+    stale = clearance.check(params, h, holders + [_box("aside", "neck_base", mid + np.array([0, 0, 40.0]))], why)
+    assert not stale.ok and stale.problems == ["span a -> b: clear of every part, but harness.unresolved still names "
+                                               "it: take it off that list"]
+
+
+@pytest.mark.parametrize("entries, message", [
+    ([{"from": "a", "to": "c", "why": "x"}], r"harness\.unresolved\[0\]: a -> c is no free span of the harness"),
+    ([{"from": "a", "to": "b", "why": "x"}, {"from": "a", "to": "b", "why": "y"}],
+     r"harness\.unresolved\[1\]: a -> b is named twice"),
+    ([{"from": "a", "to": "b"}], r"harness\.unresolved\[0\]\.why: missing"),
+    ({"from": "a", "to": "b", "why": "x"}, r"harness\.unresolved: expected a list"),
+])
+def test_bad_unresolved_entries_are_named(params, base, tmp_path, entries, message):
+    with pytest.raises(ParameterError, match=message):
+        _named(params, tmp_path, entries, _harness(base, _round(base)))
 
 
 def test_a_clamp_must_be_held_by_a_part_of_its_link(params, base):

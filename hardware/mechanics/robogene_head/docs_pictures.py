@@ -31,8 +31,8 @@ def load(path: Path) -> dict[str, dict[str, str]]:
     if not isinstance(data, dict):
         raise PictureError(f"{path}: expected a mapping of picture file names to their sources")
     for name, entry in data.items():
-        if not isinstance(entry, dict) or len(entry) != 1 or not set(entry) <= {"render", "step"}:
-            raise PictureError(f"{path}: {name}: expected exactly one of render: or step:")
+        if not isinstance(entry, dict) or len(entry) != 1 or not set(entry) <= {"render", "step", "harness"}:
+            raise PictureError(f"{path}: {name}: expected exactly one of render:, step: or harness:")
     return data
 
 
@@ -53,6 +53,8 @@ def step_picture(fab: Path, ref: str) -> Path:
 def source(fab: Path, entry: dict[str, str]) -> Path:
     if "render" in entry:
         return fab / "renders" / entry["render"]
+    if "harness" in entry:
+        return fab / "harness" / entry["harness"]
     return step_picture(fab, entry["step"])
 
 

@@ -1,9 +1,10 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """The harness step of the fabrication build: plan the harness from the parameters and the assembly, write its
-report, stop the build when a cable is over its bend radius or twist limit, draw it with WireViz into
-build/fab/harness/, and hand its BOM lines to the BOM. The spans' clearance of the parts (clearance.py) is measured
-and reported, not yet enforced. Cached on everything it is made from."""
+report, stop the build when a cable is over its bend radius or twist limit, passes through a part or hangs from a
+clamp nothing holds (clearance.py; but for the spans harness.unresolved names), draw it with WireViz and picture
+its routes among the parts (picture.py) into build/fab/harness/, and hand its BOM lines to the BOM. Cached on
+everything it is made from."""
 from __future__ import annotations
 
 import hashlib
@@ -14,7 +15,7 @@ from robogene_head_model.params import HeadParameters
 
 from .. import fcl_mesh
 from ..cache import Cache, digest
-from . import clearance, drawing, pinout, plan, report, spec
+from . import clearance, drawing, picture, pinout, plan, report, spec
 
 # its own code, and the part meshing its clearance check (clearance.py) uses
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py")) + [Path(fcl_mesh.__file__)]
@@ -47,15 +48,19 @@ def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progr
     progress.note("harness: sweeping the free spans over their joints' ranges")
     h = plan.plan(params, spec.load(params), parts)
     progress.note("harness: the spans' clearance of the parts")
-    spans_clear = clearance.check(params, h, parts)
+    spans_clear = clearance.check(params, h, parts, clearance.unresolved(params, h))
     folder.mkdir(parents=True, exist_ok=True)
     reports.mkdir(parents=True, exist_ok=True)
     text.write_text(report.as_text(h, spans_clear))
-    if not h.ok:
+    problems = h.problems + spans_clear.problems
+    if problems:
         data.unlink(missing_ok=True)
-        raise HarnessError("harness check failed, see " + str(text) + ":\n  " + "\n  ".join(h.problems))
-    progress.note("harness: WireViz drawings")
+        raise HarnessError("harness check failed, see " + str(text) + ":\n  " + "\n  ".join(problems))
+    progress.note("harness: WireViz drawings, and pictures of the routes")
     written = drawing.write(h, catalog, folder)
+    for pic in picture.PICTURES:
+        written.append(folder / f"{pic.name}.png")
+        picture.draw(params, h, parts, pic, written[-1])
     for stale in folder.iterdir():
         if stale.is_file() and stale not in written and stale != data:
             stale.unlink()

@@ -16,7 +16,11 @@ can take as modelled.
 
 A clamp is a clip or tie on a part's face: each must lie outside every part of its link and within clamp_standoff
 (mm) of one of them, the part that holds it. A clamp inside a part, or further from every part of its link, has
-nothing to hold it."""
+nothing to hold it.
+
+The build stops on a blocked span or an unheld clamp (build.py), except for the spans harness.unresolved names,
+each with why: those are reported as blocked and known. An entry whose span is clear, or is no span of the harness,
+stops the build too, so the list cannot outlive the problem it names."""
 from __future__ import annotations
 
 import math
@@ -26,7 +30,7 @@ import cadquery as cq
 import fcl
 import numpy as np
 
-from robogene_head_model.params import HeadParameters
+from robogene_head_model.params import HeadParameters, Node
 
 from .. import fcl_mesh
 from . import spans
@@ -79,10 +83,16 @@ class Clearance:
     clamp_zone: float
     spans: list[SpanClearance]
     clamps: list[ClampSupport] = field(default_factory=list)
+    unresolved: dict[tuple[str, str], str] = field(default_factory=dict)   # (a, b): why it is still blocked
 
     @property
     def ok(self) -> bool:
-        return all(s.ok for s in self.spans) and all(c.ok for c in self.clamps)
+        return not self.problems
+
+    @property
+    def known(self) -> list[str]:
+        """The blocked spans harness.unresolved names: reported, not stopping the build."""
+        return [line for s in self.spans if (s.a, s.b) in self.unresolved for line in _blocked_lines(s)]
 
     @property
     def problems(self) -> list[str]:
@@ -94,12 +104,41 @@ class Clearance:
                 out.append(f"clamp {c.name}: {c.distance:.1f} mm from the nearest part of {c.link} ({c.nearest}), more "
                            f"than clamp_standoff {c.standoff:g} mm: nothing holds it")
         for s in self.spans:
-            for b in s.blocked:
-                pose = ", ".join(f"{j} {v:+.1f}" for j, v in b.pose.items()) or "rest"
-                what = f"the round wires (bundle {s.bundle_od:.1f} mm)" if b.cable == "bundle" else f"{b.cable}"
-                out.append(f"span {s.a} -> {s.b}: {what} pass through {b.part} ({b.link}) {b.at_mm:.0f} mm from "
-                           f"{s.a}, at {pose}")
+            if (s.a, s.b) not in self.unresolved:
+                out += _blocked_lines(s)
+            elif s.ok:
+                out.append(f"span {s.a} -> {s.b}: clear of every part, but harness.unresolved still names it: take "
+                           f"it off that list")
         return out
+
+
+def _blocked_lines(s: SpanClearance) -> list[str]:
+    out = []
+    for b in s.blocked:
+        pose = ", ".join(f"{j} {v:+.1f}" for j, v in b.pose.items()) or "rest"
+        what = f"the round wires (bundle {s.bundle_od:.1f} mm)" if b.cable == "bundle" else f"{b.cable}"
+        out.append(f"span {s.a} -> {s.b}: {what} pass through {b.part} ({b.link}) {b.at_mm:.0f} mm from {s.a}, "
+                   f"at {pose}")
+    return out
+
+
+def unresolved(params: HeadParameters, harness: Harness) -> dict[tuple[str, str], str]:
+    """harness.unresolved: a list of {from, to, why}, each a free span of the harness."""
+    node = params.root.node("harness")
+    entries = node.raw("unresolved") if node.has("unresolved") else []
+    if not isinstance(entries, list):
+        raise node.fail("unresolved", f"expected a list of {{from, to, why}}, got {entries!r}")
+    items = Node({f"unresolved[{i}]": e for i, e in enumerate(entries)}, "harness", str(params.path))
+    out = {}
+    for i in range(len(entries)):
+        entry = items.node(f"unresolved[{i}]")
+        key, why = (entry.text("from"), entry.text("to")), entry.text("why")
+        if key not in harness.spans:
+            raise items.fail(f"unresolved[{i}]", f"{key[0]} -> {key[1]} is no free span of the harness")
+        if key in out:
+            raise items.fail(f"unresolved[{i}]", f"{key[0]} -> {key[1]} is named twice")
+        out[key] = why
+    return out
 
 
 def bundle_od(span: Span) -> float:
@@ -160,7 +199,9 @@ def clamp_supports(harness: Harness, models: _Models, standoff: float) -> list[C
     return out
 
 
-def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
+def check(params: HeadParameters, harness: Harness, parts,
+          unresolved: dict[tuple[str, str], str] | None = None) -> Clearance:
+    """unresolved: the spans known to be blocked, with why (the build passes harness.unresolved's, unresolved())."""
     node = params.root.node("harness")
     zone = node.num("clamp_zone", minimum=0)
     models = _Models(parts)
@@ -203,4 +244,5 @@ def check(params: HeadParameters, harness: Harness, parts) -> Clearance:
                                 sc.blocked.append(Blocked(part.name, link, cable, float(mid_s),
                                                           {k: round(v, 1) for k, v in angles.items()}))
         results.append(sc)
-    return Clearance(zone, results, clamp_supports(harness, models, node.num("clamp_standoff", positive=True)))
+    return Clearance(zone, results, clamp_supports(harness, models, node.num("clamp_standoff", positive=True)),
+                     dict(unresolved or {}))

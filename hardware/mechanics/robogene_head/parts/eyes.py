@@ -6,7 +6,7 @@ from __future__ import annotations
 from robogene_head_model.params import HeadParameters, ParameterError
 
 from .. import geom
-from . import eye_hubs, eye_stops, gearhead_screws, mounts, purchased, tilt_bearings
+from . import cable_shelf, eye_hubs, eye_stops, gearhead_screws, mounts, purchased, tilt_bearings
 from .base import ALUMINIUM, PRINTED, Part, loc
 
 
@@ -75,6 +75,7 @@ def build(params: HeadParameters) -> list[Part]:
     # The pan gearheads' flanges bear on the plate's underside; their screws come from above, heads sunk below
     # the eye cups.
     flanges = {s: loc(0, s * half, z_top, rx=180) for s in (1, -1)}
+    shelf = cable_shelf.shelf(params, -al_ / 2 - 4, z_top - pt, z_top, arm_in)
     stop_pins, stop_holes = [], []
     for side, sign in (("left", 1), ("right", -1)):
         found = eye_stops.pins(params, f"{side}_eye_pan", sign * half, z_top, "eyes_tilt_link")
@@ -85,7 +86,7 @@ def build(params: HeadParameters) -> list[Part]:
                               for s in (1, -1)],
                      *[t.moved(f) for f in flanges.values()
                        for t in gearhead_screws.holes(params, pan_gear.num("diameter"), pt)],
-                     *stop_holes, *tilt_bearings.frame_features(params)[1],
+                     *stop_holes, *tilt_bearings.frame_features(params)[1], *cable_shelf.plate_holes(params, shelf),
                      # flats for the joint pulley's set screws on the left tilt shaft, along the pulley's hub
                      *[t.moved(pulley_at) for t in mounts.shaft_flats(params, "eyes_tilt", tilt_bearing.num("bore"),
                                                                       outboard=True)])
@@ -93,6 +94,7 @@ def build(params: HeadParameters) -> list[Part]:
                   material="aluminium-6082", color=ALUMINIUM,
                   note="Pan gearheads: " + gearhead_screws.note(params) + " " + eye_stops.PIN_NOTE)] + stop_pins
     parts += [p for p in tilt_bearings.right_parts(params) if p.link == "eyes_tilt_link"]   # the clip on the journal
+    parts += cable_shelf.parts(params, shelf)
     teeth = int(params.geometry("pulleys", "tilt").num("joint_teeth", positive=True))
     bore = tilt_bearing.num("bore")
     # The joint pulley's hub stands outboard of it; its set screws bear on the flats of the left tilt shaft.
