@@ -27,7 +27,7 @@ Bottle encode_image(const ImageRgb& image, int quantum) {
   const std::size_t row = row_bytes(image.width, quantum);
   const std::size_t packed = static_cast<std::size_t>(image.width) * 3u;
   std::vector<std::uint8_t> pixels(row * static_cast<std::size_t>(image.height), 0);
-  for (int y = 0; y < image.height; ++y) {
+  for (int y = 0; packed != 0 && y < image.height; ++y) {  // an empty image's data() may be null: no memcpy
     const std::size_t wire_row = static_cast<std::size_t>(image.height - 1 - y);
     std::memcpy(pixels.data() + row * wire_row, image.pixels.data() + packed * static_cast<std::size_t>(y), packed);
   }
@@ -90,6 +90,7 @@ bool decode_image(const Bottle& m, ImageRgb& out, std::string& error) {
   const bool bottom_up = (f[2] & kRowsBottomUp) != 0;
   out.resize(static_cast<int>(width), static_cast<int>(height));
   const std::size_t packed = static_cast<std::size_t>(width) * 3u;
+  if (packed == 0) return true;  // an empty image (0 x h): no pixels, and memcpy may not take its null data()
   for (std::int64_t y = 0; y < height; ++y) {
     const std::int64_t src_row = bottom_up ? height - 1 - y : y;
     std::memcpy(out.pixels.data() + packed * static_cast<std::size_t>(y),

@@ -52,6 +52,23 @@ TEST(ImageCodec, MalformedImagesAreRefusedWithTheReason) {
   EXPECT_FALSE(decode_image(Bottle::from_text("1 2 3"), out, error));
 }
 
+// A zero-width image has rows but no pixels: it decodes as an empty image of that height and encodes back. The
+// fuzzer found both copies passing the empty image's null data() to memcpy (undefined behaviour, UBSan); its input
+// is the regression seed runtime/fuzz/corpus/image_codec_fuzz/regression-zero-width.
+TEST(ImageCodec, AZeroWidthImageDecodesEmptyAndRoundTrips) {
+  ImageRgb out;
+  std::string error;
+  ASSERT_TRUE(decode_image(Bottle::from_text("[mat] [rgb] (3 0 65544 0 4) {}"), out, error)) << error;
+  EXPECT_EQ(out.width, 0);
+  EXPECT_EQ(out.height, 4);
+  EXPECT_TRUE(out.pixels.empty());
+  const Bottle again = encode_image(out);
+  EXPECT_EQ(again[2].to_text(), "(3 0 65544 0 4)");
+  ImageRgb back;
+  ASSERT_TRUE(decode_image(Bottle::from_bytes(again.to_bytes()), back, error)) << error;
+  EXPECT_EQ(back.height, 4);
+}
+
 // Row order, as YARP 3.5 reads it: an image its Python binding made (green = 10 * y, red = x)
 // arrives with bit 16 clear and the top row first; ours go with the bit set, bottom row first.
 TEST(ImageCodec, RowOrderFollowsBit16AsYarpReadsIt) {
