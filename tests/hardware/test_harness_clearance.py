@@ -10,6 +10,7 @@ import itertools
 import json
 
 import cadquery as cq
+import fcl
 import numpy as np
 import pytest
 
@@ -153,8 +154,9 @@ NEAR_JOINTS = {"neck_pitch": ("neck_roll", "neck_yaw"), "neck_roll": ("neck_pitc
 
 
 def _clear_over(params, span, a, b, models, extra):
-    """The parts the span's round bundle or flat cables touch with the joints `extra` (name: angles) swept with its
-    own. The curve keeps its shape in clamp A's link frame whatever joints off its path do: it is carried along."""
+    """The links whose parts the span's round bundle or flat cables touch with the joints `extra` (name: angles) swept
+    with its own. The curve keeps its shape in clamp A's link frame whatever joints off its path do: it is carried
+    along."""
     od = clearance.bundle_od(span)
     flats = [(cls.width, cls.thickness) for _, cls, _ in span.members if cls.shape == "flat"]
     zone = params.root.node("harness").num("clamp_zone")
@@ -166,19 +168,16 @@ def _clear_over(params, span, a, b, models, extra):
             carry = poses[a.link] @ back
             points = c.points @ carry[:3, :3].T + carry[:3, 3]
             widths = c.widths @ carry[:3, :3].T
-            links = {link: clearance.fcl.CollisionObject(m, clearance.fcl.Transform(poses[link][:3, :3],
-                                                                                     poses[link][:3, 3]))
+            links = {link: fcl.CollisionObject(m, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
                      for link, m in models.links.items()}
             for j in range(len(points) - 1):
                 mid = (j + 0.5) * c.piece
                 exempt = ({a.link} if mid < zone else set()) | ({b.link} if span.length - mid < zone else set())
                 p, q = points[j], points[j + 1]
                 seg = float(np.linalg.norm(q - p))
-                shapes = ([clearance.fcl.Capsule(od / 2, seg)] if od else []) + \
-                         [clearance.fcl.Box(w, t, seg) for w, t in flats]
+                shapes = ([fcl.Capsule(od / 2, seg)] if od else []) + [fcl.Box(w, t, seg) for w, t in flats]
                 for g in shapes:
-                    obj = clearance.fcl.CollisionObject(g, clearance.fcl.Transform(clearance._basis(q - p, widths[j]),
-                                                                                   (p + q) / 2))
+                    obj = fcl.CollisionObject(g, fcl.Transform(clearance._basis(q - p, widths[j]), (p + q) / 2))
                     hits |= {link for link, target in links.items()
                              if link not in exempt and clearance._touches(obj, target)}
     return hits
