@@ -6,11 +6,9 @@ diameter grows with its wires; flat cables are checked as bands; a clamp must li
 not inside one; the package reports it for every span and every clamp; the build stops on a blocked span but those
 harness.unresolved names, and on a named one that is clear."""
 import dataclasses
-import itertools
 import json
 
 import cadquery as cq
-import fcl
 import numpy as np
 import pytest
 
@@ -153,34 +151,10 @@ NEAR_JOINTS = {"neck_pitch": ("neck_roll", "neck_yaw"), "neck_roll": ("neck_pitc
                "left_eye_pan": ("eyes_tilt",), "right_eye_pan": ("eyes_tilt",)}
 
 
-def _clear_over(params, span, a, b, models, extra):
-    """The links whose parts the span's round bundle or flat cables touch with the joints `extra` (name: angles) swept
-    with its own. The curve keeps its shape in clamp A's link frame whatever joints off its path do: it is carried
-    along."""
-    od = clearance.bundle_od(span)
-    flats = [(cls.width, cls.thickness) for _, cls, _ in span.members if cls.shape == "flat"]
+def _blocked_over(params, span, a, b, models, near):
+    """The links whose parts the span's cables touch with the joints `near` (name: angles) swept with its own."""
     zone = params.root.node("harness").num("clamp_zone")
-    hits = set()
-    for (angles, rest), c in zip(plan.sweep(params, span.joints, 7), span.curves):
-        back = np.linalg.inv(rest[a.link])
-        for values in itertools.product(*extra.values()):
-            poses = kinematics.link_poses(params, dict(angles, **dict(zip(extra, values))))
-            carry = poses[a.link] @ back
-            points = c.points @ carry[:3, :3].T + carry[:3, 3]
-            widths = c.widths @ carry[:3, :3].T
-            links = {link: fcl.CollisionObject(m, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
-                     for link, m in models.links.items()}
-            for j in range(len(points) - 1):
-                mid = (j + 0.5) * c.piece
-                exempt = ({a.link} if mid < zone else set()) | ({b.link} if span.length - mid < zone else set())
-                p, q = points[j], points[j + 1]
-                seg = float(np.linalg.norm(q - p))
-                shapes = ([fcl.Capsule(od / 2, seg)] if od else []) + [fcl.Box(w, t, seg) for w, t in flats]
-                for g in shapes:
-                    obj = fcl.CollisionObject(g, fcl.Transform(clearance._basis(q - p, widths[j]), (p + q) / 2))
-                    hits |= {link for link, target in links.items()
-                             if link not in exempt and clearance._touches(obj, target)}
-    return hits
+    return {x.link for x in clearance.span_clearance(params, span, a, b, models, zone, 7, near).blocked}
 
 
 def test_every_span_is_clear_over_the_joints_near_it_too(params, base, assembly):
@@ -193,7 +167,7 @@ def test_every_span_is_clear_over_the_joints_near_it_too(params, base, assembly)
         a, b = base.clamps[x], base.clamps[y]
         near = {j for own in span.joints for j in NEAR_JOINTS[own]} - set(span.joints)
         extra = {j: np.linspace(params.joints[j].lower, params.joints[j].upper, 3) for j in sorted(near)}
-        assert extra and _clear_over(params, span, a, b, models, extra) == set(), (x, y)
+        assert extra and _blocked_over(params, span, a, b, models, extra) == set(), (x, y)
 
 
 def test_the_wider_sweep_finds_what_the_builds_misses(params, base, assembly):
@@ -210,9 +184,9 @@ def test_the_wider_sweep_finds_what_the_builds_misses(params, base, assembly):
     users = [m for m in plan.plan(params, base, assembly.parts).spans[("roll_cross", "roll_land")].members]
     span = plan.check_span(params, s2, first["roll_cross"], first["roll_land"], users)
     models = clearance._Models(assembly.parts)
-    assert _clear_over(params, span, first["roll_cross"], first["roll_land"], models, {"neck_yaw": [0.0]}) == set()
-    assert "head_frame" in _clear_over(params, span, first["roll_cross"], first["roll_land"], models,
-                                       {"neck_yaw": [-45.0]})
+    assert _blocked_over(params, span, first["roll_cross"], first["roll_land"], models, {"neck_yaw": [0.0]}) == set()
+    assert "head_frame" in _blocked_over(params, span, first["roll_cross"], first["roll_land"], models,
+                                         {"neck_yaw": [-45.0]})
 
 
 def test_the_eyes_camera_loops_keep_to_their_own_sides(params, base):

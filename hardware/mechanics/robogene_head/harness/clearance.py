@@ -23,7 +23,9 @@ each with why: those are reported as blocked and known. An entry whose span is c
 stops the build too, so the list cannot outlive the problem it names."""
 from __future__ import annotations
 
+import itertools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import cadquery as cq
@@ -32,9 +34,10 @@ import numpy as np
 
 from robogene_head_model.params import HeadParameters, Node
 
-from .. import fcl_mesh
+from .. import fcl_mesh, kinematics
 from . import spans
 from .plan import Harness, Span, frame, sweep
+from .spec import Clamp
 
 PACKING = 0.65            # share of a loose bundle's circle its wires fill
 MESH_DEFLECTION = 0.1     # mm, the parts' tessellation
@@ -199,35 +202,39 @@ def clamp_supports(harness: Harness, models: _Models, standoff: float) -> list[C
     return out
 
 
-def check(params: HeadParameters, harness: Harness, parts,
-          unresolved: dict[tuple[str, str], str] | None = None) -> Clearance:
-    """unresolved: the spans known to be blocked, with why (the build passes harness.unresolved's, unresolved())."""
-    node = params.root.node("harness")
-    zone = node.num("clamp_zone", minimum=0)
-    models = _Models(parts)
-    results = []
-    for (x, y), span in harness.spans.items():
-        a, b = harness.spec.clamps[x], harness.spec.clamps[y]
-        od = bundle_od(span)
-        flats = tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
-        sc = SpanClearance(x, y, od, flats, 0)
-        seen: set[tuple[str, str]] = set()
-        swept = list(sweep(params, span.joints, harness.spec.sweep_samples))
-        # The plan's curves, or (a span made by hand) the same curves worked out here.
-        curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in swept],
-                                             [frame(p[b.link], b) for _, p in swept], span.length)
-        for (angles, poses), c in zip(swept, curves):
+def span_clearance(params: HeadParameters, span: Span, a: Clamp, b: Clamp, models: _Models, zone: float,
+                   samples: int, near: dict[str, Sequence[float]] | None = None) -> SpanClearance:
+    """One span's cables against the parts over its joints' sweep (`samples` per joint). near: joints the span does
+    not cross to sweep as well (name: angles); the curve keeps its shape in clamp A's link frame whatever they do, and
+    is carried along with it."""
+    near = near or {}
+    od = bundle_od(span)
+    flats = tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
+    sc = SpanClearance(a.name, b.name, od, flats, 0)
+    seen: set[tuple[str, str]] = set()
+    swept = list(sweep(params, span.joints, samples))
+    # The plan's curves, or (a span made by hand) the same curves worked out here.
+    curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in swept],
+                                         [frame(p[b.link], b) for _, p in swept], span.length)
+    for (own_angles, own), c in zip(swept, curves):
+        for values in itertools.product(*near.values()):
+            angles, poses, points, widths = own_angles, own, c.points, c.widths
+            if near:
+                angles = dict(own_angles, **dict(zip(near, values)))
+                poses = kinematics.link_poses(params, angles)
+                carry = poses[a.link] @ np.linalg.inv(own[a.link])
+                points, widths = c.points @ carry[:3, :3].T + carry[:3, 3], c.widths @ carry[:3, :3].T
             sc.poses += 1
             s = spans.arc_lengths(c)
             links = {link: fcl.CollisionObject(m, fcl.Transform(poses[link][:3, :3], poses[link][:3, 3]))
                      for link, m in models.links.items()}
             for j in range(len(s) - 1):
-                p, q = c.points[j], c.points[j + 1]
+                p, q = points[j], points[j + 1]
                 seg = float(np.linalg.norm(q - p))
                 mid_s = (s[j] + s[j + 1]) / 2
                 exempt = {a.link} if mid_s < zone else set()
                 exempt |= {b.link} if span.length - mid_s < zone else set()
-                rot = _basis(q - p, c.widths[j])
+                rot = _basis(q - p, widths[j])
                 shapes = [("bundle", fcl.Capsule(od / 2, seg))] if od else []
                 shapes += [(name, fcl.Box(w, t, seg)) for name, w, t in flats]
                 for cable, geometry in shapes:
@@ -243,6 +250,16 @@ def check(params: HeadParameters, harness: Harness, parts,
                                 seen.add((part.name, cable))
                                 sc.blocked.append(Blocked(part.name, link, cable, float(mid_s),
                                                           {k: round(v, 1) for k, v in angles.items()}))
-        results.append(sc)
+    return sc
+
+
+def check(params: HeadParameters, harness: Harness, parts,
+          unresolved: dict[tuple[str, str], str] | None = None) -> Clearance:
+    """unresolved: the spans known to be blocked, with why (the build passes harness.unresolved's, unresolved())."""
+    node = params.root.node("harness")
+    zone = node.num("clamp_zone", minimum=0)
+    models = _Models(parts)
+    results = [span_clearance(params, span, harness.spec.clamps[x], harness.spec.clamps[y], models, zone,
+                              harness.spec.sweep_samples) for (x, y), span in harness.spans.items()]
     return Clearance(zone, results, clamp_supports(harness, models, node.num("clamp_standoff", positive=True)),
                      dict(unresolved or {}))
