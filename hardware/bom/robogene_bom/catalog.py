@@ -9,6 +9,8 @@ from pathlib import Path
 
 import yaml
 
+from robogene_head_model import strict_yaml
+
 DEFAULT_PATH = Path(__file__).resolve().parents[1] / "catalog.yaml"
 FIELDS = ("description", "manufacturer", "mpn", "supplier", "datasheet", "breaks")
 
@@ -59,7 +61,7 @@ class Catalog:
 def load(path: Path | str | None = None) -> Catalog:
     path = Path(path) if path else DEFAULT_PATH
     try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+        data = strict_yaml.load(path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise CatalogError(f"{path}: cannot read: {exc.strerror}") from None
     except yaml.MarkedYAMLError as exc:

@@ -13,6 +13,8 @@ from typing import Any
 
 import yaml
 
+from . import strict_yaml
+
 DEFAULT_PATH = Path(__file__).resolve().parents[2] / "head-parameters.yaml"
 
 CONTROL_JOINTS = ("neck_pitch", "neck_roll", "neck_yaw", "eyes_tilt", "eyes_version", "eyes_vergence")
@@ -252,7 +254,7 @@ def load(path: Path | str | None = None) -> HeadParameters:
     except OSError as exc:
         raise ParameterError(f"{path}: cannot read: {exc.strerror}") from None
     try:
-        data = yaml.safe_load(text)
+        data = strict_yaml.load(text)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark
         where = f"{mark.line + 1}:{mark.column + 1}" if mark else "?"

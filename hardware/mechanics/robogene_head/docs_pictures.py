@@ -18,6 +18,8 @@ import numpy as np
 import yaml
 from PIL import Image
 
+from robogene_head_model import strict_yaml
+
 CHANNEL_STEP = 48          # of 255: well above rendering noise, well below a part's colour against the background
 MAX_CHANGED = 0.01         # the share of changed pixels a copy may have and still count as the package's picture
 
@@ -27,7 +29,11 @@ class PictureError(ValueError):
 
 
 def load(path: Path) -> dict[str, dict[str, str]]:
-    data = yaml.safe_load(path.read_text())
+    try:
+        data = strict_yaml.load(path.read_text(encoding="utf-8"))
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark
+        raise PictureError(f"{path}:{mark.line + 1 if mark else '?'}: YAML error: {exc.problem}") from None
     if not isinstance(data, dict):
         raise PictureError(f"{path}: expected a mapping of picture file names to their sources")
     for name, entry in data.items():

@@ -15,6 +15,8 @@ from pathlib import Path
 import numpy as np
 import yaml
 
+from robogene_head_model import strict_yaml
+
 DEFAULT_PATH = Path(__file__).resolve().parents[1] / "assembly-sequence.yaml"
 PRESS_RINGS = ("inner", "outer")
 STEP_KEYS = {"name", "parts", "subassembly", "from", "fits", "fasteners", "driver", "press", "flexible", "access",
@@ -106,7 +108,7 @@ def _names(patterns, where: str, names: list[str]) -> list[str]:
 def load(part_names: list[str], path: Path | str | None = None) -> Sequence:
     path = Path(path) if path else DEFAULT_PATH
     try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+        data = strict_yaml.load(path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise SequenceError(f"{path}: cannot read: {exc.strerror}") from None
     except yaml.MarkedYAMLError as exc:
