@@ -25,7 +25,7 @@ def mismatches(params, parts, stage: jackshaft.Stage) -> list[str]:
     if kinds != ELEMENTS:
         return [f"elements {kinds}"]
     n = jackshaft.node(params, stage)
-    coupling = params.purchased(n.text("coupling"))
+    coupling = jackshaft.coupling(params, stage)
     screw_key = coupling.text("screw")
     screw = params.purchased(screw_key)
     gear = params.purchased(params.drive(j).text("gearhead"))

@@ -43,7 +43,7 @@ def test_a_torque_path_unlike_the_cad_is_caught(params, parts, tmp_path):
     def weak_screw(data):
         data["torque_paths"]["eyes_tilt"][0]["strength_class"] = "8.8"
     assert mismatches(edited(tmp_path, weak_screw), parts) == [
-        "clamp screw M2 8.8, drawn iso4762-M2x6-12.9"]
+        "clamp screw M2 8.8, drawn iso4762-M2x8-12.9"]
 
 
 def test_the_tilt_stage_passes_every_element(params):

@@ -287,11 +287,20 @@ def test_each_belt_stage_is_rated_on_its_own_belt_stock(params):
     assert belts["neck_yaw"].margin == pytest.approx(1.56, abs=0.005) and belts["neck_yaw"] not in report.failures()
 
 
+BOUGHT = "catalogue-coupling-16-3-6"
+
+
 def _tilt_coupling(tmp_path, **fields):
-    """The parameter file with the tilt jackshaft's coupling carrying `fields` (a maker's rating, other bores)."""
+    """The parameter file with the tilt's coupling bought instead of made: a catalogue entry of the made one's outline
+    and screws carrying `fields` (a maker's rating, other bores), which the jackshaft draws and the clamps name."""
     def edit(data):
-        key = data["geometry"]["tilt_jackshaft"]["coupling"]
-        data["purchased"][key].update(fields)
+        made = data["geometry"]["tilt_jackshaft"]["coupling"]
+        outline = {k: made[k] for k in ("diameter", "length", "bores", "screw", "offset", "seat")}
+        data["purchased"][BOUGHT] = dict(outline, kind="coupling", mass=0.007, **fields)
+        data["geometry"]["tilt_jackshaft"]["coupling"] = BOUGHT
+        for element in data["torque_paths"]["eyes_tilt"]:
+            if element["element"] == "clamp":
+                element["coupling"] = BOUGHT
     return edited(tmp_path, edit)
 
 
@@ -299,13 +308,25 @@ def _tilt_clamps(report):
     return [e for e in report.elements if e.joint == "eyes_tilt" and e.element == "clamp"]
 
 
-def test_the_tilt_clamps_name_the_coupling_the_jackshaft_draws(params):
-    """The torque path counts the coupling the CAD draws, and the clamp model alone while that part has no rating."""
-    drawn = params.root.node("geometry").node("tilt_jackshaft").text("coupling")
-    named = [e.get("coupling") for e in params.root.node("torque_paths").raw("eyes_tilt") if e["element"] == "clamp"]
-    assert named == [drawn, drawn]
-    for e in _tilt_clamps(torque_path.analyse(params)):
-        assert e.rated_Nm is None
+def test_the_made_couplings_are_held_by_their_clamps_alone(params):
+    """The couplings are made here (geometry.<stage>.coupling is their own parameters): no clamp element names a
+    catalogue coupling, and none carries a maker's rating, the clamp model's figures are theirs."""
+    for stage, joint in (("tilt_jackshaft", "eyes_tilt"), ("yaw_jackshaft", "neck_yaw")):
+        assert isinstance(params.root.node("geometry").node(stage).raw("coupling"), dict)
+        clamps = [e for e in params.root.node("torque_paths").raw(joint) if e["element"] == "clamp"]
+        assert len(clamps) == 2 and all("coupling" not in e for e in clamps)
+    report = torque_path.analyse(params)
+    assert all(e.rated_Nm is None for e in report.elements if e.element == "clamp")
+
+
+def test_a_bought_coupling_is_drawn_as_the_catalogue_part_the_clamps_name(tmp_path):
+    """Swapping in a catalogue coupling: the jackshaft draws the purchased part (no drawing, no fits of its own) and
+    the torque path counts its rating."""
+    from robogene_head.parts import tilt_jackshaft
+    variant = _tilt_coupling(tmp_path, rated_torque_Nm=50)
+    coupling = next(p for p in tilt_jackshaft.build(variant) if p.name == "eyes_tilt_coupling")
+    assert (coupling.kind, coupling.design, coupling.clamp_bores) == ("purchased", BOUGHT, ())
+    assert all(e.rated_Nm == 50 for e in _tilt_clamps(torque_path.analyse(variant)))
 
 
 def test_a_coupling_rated_below_the_drive_fails_where_its_clamps_hold(tmp_path):

@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 Robogene contributors
 # SPDX-License-Identifier: CERN-OHL-S-2.0
-"""ISO 286 fits of the bearing seats, found in the assembly, and what the drawings print about them.
+"""ISO 286 fits of the bearing seats, found in the assembly, and of the clamp bores, and what the drawings print about them.
 
 A machined part's cylindrical face that shares its axis and diameter with a bearing's outer ring is a housing
 seat; one that shares them with a bearing's bore is a journal. Which fit each gets (the parameter file's fits:
@@ -8,7 +8,8 @@ section) depends on which ring turns against the load. The load (the head's weig
 the part nearer the neck base, so on a bearing whose housing is on that part the inner ring turns: a tight
 journal and a sliding housing seat. Where the housing is on the part further out (the yaw bearing in the head
 floor, on its fixed yaw shaft) the outer ring turns: a tight housing seat and a sliding journal. Two seats of one
-bearing pair on one part must also be coaxial (fits.coaxiality); the drawing names them as datums A and B.
+bearing pair on one part must also be coaxial (fits.coaxiality); the drawing names them as datums A and B. A machined
+part's bores that clamp a shaft (Part.clamp_bores: the made couplings') get fits.clamp_bore.
 
 The limit deviations come from ISO 286-1 / 286-2 (the IT grades and the fundamental deviations of the letters
 used here, for nominal sizes up to 30 mm)."""
@@ -72,8 +73,8 @@ def deviations(diameter: float, tolerance: str) -> tuple[float, float]:
 @dataclass(frozen=True)
 class Fit:
     design: str
-    role: str            # "housing" or "journal"
-    bearing: str         # catalogue key
+    role: str            # "housing", "journal" or "clamp" (a bore that clamps a shaft)
+    bearing: str         # catalogue key ("" for a clamp bore)
     diameter: float
     tolerance: str       # ISO 286, e.g. "H7"
     upper: float         # mm
@@ -85,7 +86,7 @@ class Fit:
         def dev(v):   # in mm to the micrometre, half micrometres where js gives them
             text = f"{v:+.4f}"
             return "0" if abs(v) < 5e-7 else (text[:-1] if text.endswith("0") else text)
-        what = "bearing seat" if self.role == "housing" else "bearing journal"
+        what = {"housing": "bearing seat", "journal": "bearing journal", "clamp": "clamp bore"}[self.role]
         count = f"{self.count}x " if self.count > 1 else ""
         head = f"{count}⌀{self.diameter:g} {self.tolerance} ({dev(self.upper)}/{dev(self.lower)}) {what}s" \
             if self.count > 1 else f"⌀{self.diameter:g} {self.tolerance} ({dev(self.upper)}/{dev(self.lower)}) {what}"
@@ -98,15 +99,19 @@ def _fits(params: HeadParameters):
     return params.root.node("fits")
 
 
-def tolerance(params: HeadParameters, role: str, turns: bool) -> str:
-    """The fit of a housing or journal whose ring turns (True) or stands (False) against the load."""
-    key = f"{role}_{'turning' if turns else 'standing'}_ring"
+def _checked(params: HeadParameters, key: str) -> str:
+    """fits.<key>, an ISO 286 tolerance the table here knows."""
     value = _fits(params).text(key)
     try:
         deviations(10, value)
     except ValueError as exc:
         raise ParameterError(f"{params.path}: fits.{key}: {exc}") from None
     return value
+
+
+def tolerance(params: HeadParameters, role: str, turns: bool) -> str:
+    """The fit of a housing or journal whose ring turns (True) or stands (False) against the load."""
+    return _checked(params, f"{role}_{'turning' if turns else 'standing'}_ring")
 
 
 def _cylinders(shape) -> list:
@@ -221,7 +226,7 @@ def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
             part = by_name[name]
             entry = found.setdefault(part.design, {}).setdefault((role, seat.key, tol), {"parts": {}, "n": 0})
             entry["parts"][part.name] = entry["parts"].get(part.name, 0) + 1
-    out = {}
+    out, done = {}, set()
     for design, entries in found.items():
         fits = []
         for (role, key, tol), entry in sorted(entries.items()):
@@ -231,6 +236,14 @@ def find(params: HeadParameters, parts: list) -> dict[str, list[Fit]]:
             fits.append(Fit(design, role, key, dia, tol, upper, lower, per_instance,
                             coaxial if per_instance == 2 else 0.0))
         out[design] = fits
+    clamp = None
+    for part in parts:
+        if part.kind != "machined" or not part.clamp_bores or part.design in done:
+            continue
+        done.add(part.design)
+        clamp = clamp or _checked(params, "clamp_bore")
+        out.setdefault(part.design, []).extend(
+            Fit(part.design, "clamp", "", d, clamp, *deviations(d, clamp), 1, 0.0) for d in part.clamp_bores)
     return out
 
 

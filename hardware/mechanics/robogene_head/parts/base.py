@@ -30,6 +30,7 @@ class Part:
     solid_materials: tuple[str, ...] = ()
     source_sha256: str = ""   # geometry read from another tool's file: that file's hash, for the build's caches
     turning: bool = False     # a shaft that turns in bearings of its own link (the fits: its ring is the tight one)
+    clamp_bores: tuple[float, ...] = ()   # machined: bores that clamp a shaft (their fit: fits.clamp_bore)
 
     def __post_init__(self):
         if self.kind not in KINDS:

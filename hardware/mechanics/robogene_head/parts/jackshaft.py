@@ -51,8 +51,34 @@ class Stage:
         return BELTED[self.joint]
 
 
+COUPLING_NOTE = ("One-piece clamp coupling: each half split through one wall on the axis's plane, the relief cut at "
+                 "mid-length from the split's side past the axis; the clamp screws' clearance holes above the split, "
+                 "tapped through below it. Bores reamed to their fit; screws tightened to 0.6 N m.")
+
+
 def node(params: HeadParameters, stage: Stage) -> Node:
     return params.geometry(stage.key)
+
+
+def coupling_made(params: HeadParameters, stage: Stage) -> bool:
+    """True: the stage's coupling is made here from its own parameters; False: a catalogue key names it."""
+    return isinstance(node(params, stage).raw("coupling"), dict)
+
+
+def coupling(params: HeadParameters, stage: Stage) -> Node:
+    """The coupling's outline, bores and screws: the made coupling's parameters or the purchased one's entry."""
+    n = node(params, stage)
+    if coupling_made(params, stage):
+        return n.node("coupling")
+    entry = params.purchased(n.text("coupling"))
+    if entry.text("kind") != "coupling":
+        raise n.fail("coupling", f"{n.text('coupling')!r} is a {entry.text('kind')}, expected a coupling")
+    return entry
+
+
+def coupling_design(params: HeadParameters, stage: Stage) -> str:
+    """The made coupling's design (its STEP file and drawing), or the catalogue key of a purchased one."""
+    return f"{stage.joint}_coupling" if coupling_made(params, stage) else node(params, stage).text("coupling")
 
 
 def placed(stage: Stage, shape: cq.Shape) -> cq.Shape:
@@ -85,16 +111,16 @@ def layout(params: HeadParameters, stage: Stage) -> Layout:
     n = node(params, stage)
     bearing = params.purchased(n.text("bearing"))
     width = bearing.num("width", positive=True)
-    coupling = params.purchased(n.text("coupling"))
+    c = coupling(params, stage)
     gap, land = n.num("gap", positive=True), n.num("land", positive=True)
     fixed = stage.inner - width
     floating = fixed - land - width
     c1 = floating - gap
-    c0 = c1 - coupling.num("length", positive=True)
+    c0 = c1 - c.num("length", positive=True)
     face = c0 - gap
     gear = params.purchased(params.drive(stage.joint).text("gearhead"))
     shaft_free = gear.num("shaft_length", positive=True) - (c0 - face)
-    if shaft_free < coupling.num("length") / 4:
+    if shaft_free < c.num("length") / 4:
         raise n.fail("gap", f"leaves {shaft_free:g} mm of the {gear.num('shaft_length'):g} mm gearhead shaft in "
                                   f"the coupling")
     pulley = stage.outer + mounts.plate_gap(params)
@@ -121,9 +147,9 @@ def screw_frames(params: HeadParameters, stage: Stage) -> dict[str, list[cq.Loca
     """Each screw's frame in the stage frame (purchased.screw: the head on z = 0, the shank along +z)."""
     n, lay = node(params, stage), layout(params, stage)
     h = n.node("housing")
-    coupling = params.purchased(n.text("coupling"))
+    c = coupling(params, stage)
     c0, c1 = lay.coupling
-    off, seat = coupling.num("offset", positive=True), coupling.num("seat", positive=True)
+    off, seat = c.num("offset", positive=True), c.num("seat", positive=True)
     clamp_u = (params.purchased(params.drive(stage.joint).text("gearhead")).num("diameter") / 2 + h.num("lug")) / 2
     return {
         # down through each half of the coupling, ahead of the axis
@@ -149,10 +175,10 @@ def housing(params: HeadParameters, stage: Stage) -> cq.Solid:
     clamp, lug, split = h.num("clamp", positive=True), h.num("lug", positive=True), h.num("split", positive=True)
     gear = params.purchased(params.drive(stage.joint).text("gearhead"))
     bearing = params.purchased(bearing_key(params, stage))
-    coupling = params.purchased(n.text("coupling"))
+    c = coupling(params, stage)
     cavity = h.num("cavity", positive=True)
-    if cavity <= coupling.num("diameter", positive=True):
-        raise h.fail("cavity", f"{cavity:g} does not take the {coupling.num('diameter'):g} mm coupling")
+    if cavity <= c.num("diameter", positive=True):
+        raise h.fail("cavity", f"{cavity:g} does not take the {c.num('diameter'):g} mm coupling")
     if 2 * half - cavity < 2 or 2 * half <= gear.num("diameter") + 2:
         raise h.fail("half", f"{half:g} leaves under 1 mm of wall round the cavity or the gearhead")
     y0 = lay.gearhead_face - clamp
@@ -162,7 +188,7 @@ def housing(params: HeadParameters, stage: Stage) -> cq.Solid:
                       geom.box(x, x + lug, y0, lay.gearhead_face, z - half, z + half))
     c0, c1 = lay.coupling
     land0, land1 = lay.land
-    off = coupling.num("offset")
+    off = c.num("offset")
     window = h.num("window", positive=True)
     # the cavity reaches 1 mm over the gearhead's front, so its step stands clear of the coupling's end
     tools = [geom.cyl("y", gear.num("diameter"), y0 - 1, lay.gearhead_face, _at(lay)),
@@ -229,22 +255,46 @@ def jackshaft(params: HeadParameters, stage: Stage) -> cq.Solid:
 
 def coupling_shape(params: HeadParameters, stage: Stage) -> cq.Shape:
     """The coupling in its own frame: along +z from 0, the gearhead's half first; its screws run along -y from their
-    seats, `offset` to -x of the axis (placed: down from above, ahead of the axis)."""
-    key = node(params, stage).text("coupling")
-    c = params.purchased(key)
+    seats, `offset` to -x of the axis (placed: down from above, ahead of the axis). A made coupling is drawn as it is
+    machined: each half split on the plane y = 0 through its -x wall, the screw's clearance hole above the split and its
+    thread below, and the relief cut at mid-length; a purchased one as its outline, bores and screw holes."""
+    c = coupling(params, stage)
+    made = coupling_made(params, stage)
     d, length = c.num("diameter", positive=True), c.num("length", positive=True)
     small, large = c.vec("bores", 2)
+    if not 0 < small <= large < d:
+        raise c.fail("bores", f"expected the gearhead's bore, then the jackshaft's, both under the {d:g} mm outline")
     screw = params.purchased(c.text("screw"))
+    sd = screw.num("diameter")
     off, seat = c.num("offset", positive=True), c.num("seat", positive=True)
-    if off - screw.num("diameter") / 2 <= large / 2:
-        raise c.fail("offset", f"{off:g} puts the M{screw.num('diameter'):g} screw into the {large:g} mm bore")
+    if off - sd / 2 <= large / 2:
+        raise c.fail("offset", f"{off:g} puts the M{sd:g} screw into the {large:g} mm bore")
     body = geom.cyl("z", d, 0, length)
     tools = [geom.cyl("z", small, -1, length / 2), geom.cyl("z", large, length / 2, length + 1)]
     for zc in (length / 4, 3 * length / 4):
         # in this frame the screw runs along -y from its seat at y = seat
-        tools += [geom.cyl("y", screw.num("head_diameter") + 0.4, seat, d, (-off, zc)),
-                  geom.cyl("y", screw.num("diameter"), seat - screw.num("length"), seat, (-off, zc))]
-    return geom.single_solid(geom.cut(body, *tools), key)
+        tools.append(geom.cyl("y", screw.num("head_diameter") + 0.4, seat, d, (-off, zc)))
+        if not made:
+            tools.append(geom.cyl("y", sd, seat - screw.num("length"), seat, (-off, zc)))
+    if not made:
+        return geom.single_solid(geom.cut(body, *tools), coupling_design(params, stage))
+    split, relief = c.num("split", positive=True), c.num("relief", positive=True)
+    depth = c.num("relief_depth", minimum=0)
+    if split >= seat:
+        raise c.fail("split", f"{split:g} reaches the screw head's seat {seat:g} above the axis")
+    if depth > d / 2 - 2:
+        raise c.fail("relief_depth", f"{depth:g} leaves under 2 mm of the {d:g} mm coupling joining its halves")
+    tip = seat - screw.num("length")
+    if tip > -split / 2 - 2 * sd:
+        raise c.fail("screw", f"{c.text('screw')} reaches {-split / 2 - tip:.2g} mm into the thread beyond the split, "
+                              f"under the {2 * sd:g} mm (2 x its diameter) an aluminium thread needs")
+    out = d / 2 + 1
+    for zc in (length / 4, 3 * length / 4):
+        tools += [geom.cyl("y", mounts.clearance_hole(params, c.text("screw")), split / 2, seat, (-off, zc)),
+                  geom.cyl("y", sd, -out, -split / 2, (-off, zc))]
+    tools += [geom.box(-out, 0, -split / 2, split / 2, -1, length + 1),
+              geom.box(-out, depth, -out, out, length / 2 - relief / 2, length / 2 + relief / 2)]
+    return geom.single_solid(geom.cut(body, *tools), coupling_design(params, stage))
 
 
 def motor_pulley_key(params: HeadParameters, stage: Stage) -> str:
@@ -276,13 +326,17 @@ def build(params: HeadParameters, stage: Stage) -> list[Part]:
              Part(f"{j}_jackshaft_spacer", f"{j}_jackshaft_spacer", link, "machined", spacer(params, stage),
                   _in_link(stage), note="Sleeve, slides on the jackshaft: the fixed bearing's inner ring between it "
                   "and the collar.", material="steel", color=ALUMINIUM)]
-    key = n.text("coupling")
     # the coupling's frame turned half round its axis, then laid along +y: its +y (the screws' side) up, its -x ahead
-    parts.append(Part(f"{j}_coupling", key, link, "purchased", coupling_shape(params, stage),
-                      _in_link(stage, loc(lay.x, lay.coupling[0], lay.z, rx=-90) * loc(rz=180)),
-                      mass=params.purchased(key).num("mass"), color=ALUMINIUM))
+    at = _in_link(stage, loc(lay.x, lay.coupling[0], lay.z, rx=-90) * loc(rz=180))
+    design = coupling_design(params, stage)
+    if coupling_made(params, stage):
+        parts.append(Part(f"{j}_coupling", design, link, "machined", coupling_shape(params, stage), at,
+                          note=COUPLING_NOTE, clamp_bores=tuple(coupling(params, stage).vec("bores", 2)), **al))
+    else:
+        parts.append(Part(f"{j}_coupling", design, link, "purchased", coupling_shape(params, stage), at,
+                          mass=params.purchased(design).num("mass"), color=ALUMINIUM))
     frames = screw_frames(params, stage)
-    screw = params.purchased(key).text("screw")
+    screw = coupling(params, stage).text("screw")
     parts += [purchased.screw(params, f"{j}_coupling_screw_{i}", screw, link, _in_link(stage, f))
               for i, f in enumerate(frames["coupling"])]
     parts.append(purchased.screw(params, f"{j}_clamp_screw", n.text("clamp_screw"), link,
