@@ -139,16 +139,12 @@ def test_every_span_is_clear_of_the_parts(fab):
     assert set(spans) == {("roll_exit", "roll_feed"), ("roll_cross", "roll_land"), ("yaw_cross", "head_entry"),
                           ("tilt_feed_l", "tilt_arm_l"), ("tilt_feed_r", "tilt_arm_r"), ("eye_l", "pan_feed_l"),
                           ("eye_r", "pan_feed_r"), ("cam_arm_l", "cam_feed_l"), ("cam_arm_r", "cam_feed_r")}
+    # 7 samples of its own joint, and 3 of each joint near it: the neck's loops over the other two neck joints, the
+    # loops across tilt (the drives' and the cameras') with both eyes panned, the loops across a pan with the eyes tilted
+    across_pan = {("eye_l", "pan_feed_l"), ("eye_r", "pan_feed_r")}      # one joint near them: the tilt
     for key, span in spans.items():
-        assert span["blocked"] == [] and span["poses"] == 7, key
+        assert span["blocked"] == [] and span["poses"] == 7 * 3 ** (1 if key in across_pan else 2), key
     assert all(k["ok"] for k in cl["clamps"])
-
-
-# The joints a span does not cross that move parts near it: the build holds them at zero (clearance.check sweeps a
-# span's own joints only); these were checked by hand when the routes were laid out, and are held here.
-NEAR_JOINTS = {"neck_pitch": ("neck_roll", "neck_yaw"), "neck_roll": ("neck_pitch", "neck_yaw"),
-               "neck_yaw": ("neck_pitch", "neck_roll"), "eyes_tilt": ("left_eye_pan", "right_eye_pan"),
-               "left_eye_pan": ("eyes_tilt",), "right_eye_pan": ("eyes_tilt",)}
 
 
 def _blocked_over(params, span, a, b, models, near):
@@ -157,22 +153,35 @@ def _blocked_over(params, span, a, b, models, near):
     return {x.link for x in clearance.span_clearance(params, span, a, b, models, zone, 7, near).blocked}
 
 
-def test_every_span_is_clear_over_the_joints_near_it_too(params, base, assembly):
-    """Each free span, over its own joints' range and, three samples each, the joints it does not cross that move parts
-    near it: the neck's loops over the other two neck joints, the loops across tilt with the eyes panned, the loops
-    across pan with the eyes tilted. None touches a part."""
-    h = plan.plan(params, base, assembly.parts)
-    models = clearance._Models(assembly.parts)
-    for (x, y), span in h.spans.items():
-        a, b = base.clamps[x], base.clamps[y]
-        near = {j for own in span.joints for j in NEAR_JOINTS[own]} - set(span.joints)
-        extra = {j: np.linspace(params.joints[j].lower, params.joints[j].upper, 3) for j in sorted(near)}
-        assert extra and _blocked_over(params, span, a, b, models, extra) == set(), (x, y)
+def test_the_sweep_takes_in_the_joints_near_a_span(params):
+    """harness.near_joints, at harness.near_samples angles over each range, less the joints the span crosses."""
+    near = clearance.near_joints(params, ("neck_roll",))
+    assert sorted(near) == ["neck_pitch", "neck_yaw"]
+    yaw = params.joints["neck_yaw"]
+    assert list(near["neck_yaw"]) == [yaw.lower, (yaw.lower + yaw.upper) / 2, yaw.upper]
+    assert sorted(clearance.near_joints(params, ("neck_pitch", "neck_roll"))) == ["neck_yaw"]
+    assert sorted(clearance.near_joints(params, ("left_eye_pan",))) == ["eyes_tilt"]
+    assert clearance.near_joints(params, ()) == {}
 
 
-def test_the_wider_sweep_finds_what_the_builds_misses(params, base, assembly):
-    """The broken variant: the first roll loop the clamp search found is clear over roll alone, as the build checks
-    it, but meets the yaw belt with the head yawed to -45 deg."""
+@pytest.mark.parametrize("edit, message", [
+    (lambda h: h["near_joints"].update(neck_roll=["neck_pitch", "neck_twist"]),
+     r"harness\.near_joints\.neck_roll: 'neck_twist' is no joint of the head"),
+    (lambda h: h["near_joints"].update(neck_roll="neck_pitch"), r"harness\.near_joints\.neck_roll: expected a list"),
+    (lambda h: h["near_joints"].update(neck_twist=["neck_pitch"]), r"harness\.near_joints\.neck_twist: is no joint"),
+    (lambda h: h.update(near_samples=2.5), r"harness\.near_samples: expected a whole number"),
+])
+def test_bad_near_joints_are_named(params, tmp_path, edit, message):
+    def apply(data):
+        edit(data["harness"])
+    with pytest.raises(ParameterError, match=message):
+        clearance.near_joints(edited(tmp_path, apply), ("neck_roll",))
+
+
+def test_the_sweep_over_the_joints_near_a_span_finds_what_its_own_misses(params, base, assembly):
+    """The broken variant: the first roll loop the clamp search found is clear over roll alone, but meets the head
+    frame with the head yawed to -45 deg, one of the yaw angles the build's sweep over the joints near the loop
+    takes."""
     first = dict(base.clamps)
     first["roll_cross"] = spec.Clamp("roll_cross", "neck_pitch_link", np.array([-29.0, 10, 47]),
                                      np.array([0, 0.978, -0.208]) / np.linalg.norm([0, 0.978, -0.208]),
@@ -187,6 +196,7 @@ def test_the_wider_sweep_finds_what_the_builds_misses(params, base, assembly):
     assert _blocked_over(params, span, first["roll_cross"], first["roll_land"], models, {"neck_yaw": [0.0]}) == set()
     assert "head_frame" in _blocked_over(params, span, first["roll_cross"], first["roll_land"], models,
                                          {"neck_yaw": [-45.0]})
+    assert -45.0 in clearance.near_joints(params, span.joints)["neck_yaw"]
 
 
 def test_the_eyes_camera_loops_keep_to_their_own_sides(params, base):
@@ -257,6 +267,28 @@ def test_a_clamp_must_be_held_by_a_part_of_its_link(params, base):
     # a part of another link next to the clamp does not hold it
     other = _box("other", "head_frame", (0, 0, -118), (6, 6, 1))
     assert not {k.name: k for k in clearance.check(params, h, [low, other]).clamps}["a"].ok
+
+
+def test_a_part_turning_in_the_clamps_link_does_not_hold_it(params, base, assembly):
+    """A pulley or coupling on a jackshaft turns in its link: a tie on it would wind the cables up. The standing part
+    further off is the one measured; if it is beyond clamp_standoff the clamp is not held."""
+    standoff = params.root.node("harness").num("clamp_standoff")
+    h = _harness(base, _round(base))
+    pulley = _box("pulley", "neck_base", (0, 0, -1.5), (6, 6, 1))
+    frame = _box("frame", "neck_base", (0, 0, -standoff - 1.5), (6, 6, 1))
+    models = clearance._Models([pulley, frame])
+    held = {k.name: k for k in clearance.clamp_supports(h, models, standoff)}
+    assert held["a"].ok and held["a"].nearest == "pulley"
+    turning = {k.name: k for k in clearance.clamp_supports(h, models, standoff, frozenset({"pulley"}))}
+    assert not turning["a"].ok and turning["a"].nearest == "frame"
+    alone = clearance._Models([pulley])
+    (lonely, _) = clearance.clamp_supports(h, alone, standoff, frozenset({"pulley"}))
+    problems = clearance.Clearance(10, [], [lonely]).problems
+    assert problems == ["clamp a: no part of neck_base stands in the link to hold it"]
+    # in the head: the jackshafts and what turns on them
+    turns = clearance.turning_parts(params, assembly.parts)
+    assert {"eyes_tilt_jackshaft", "eyes_tilt_coupling", "eyes_tilt_motor_pulley", "neck_yaw_coupling"} <= turns
+    assert "eyes_tilt_jackshaft_housing" not in turns and "head_floor" not in turns
 
 
 def test_a_clamp_inside_a_part_is_refused_and_one_on_its_face_is_not(params, base):

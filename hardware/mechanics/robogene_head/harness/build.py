@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: CERN-OHL-S-2.0
 """The harness step of the fabrication build: plan the harness from the parameters and the assembly, write its
 report, stop the build when a cable is over its bend radius or twist limit, passes through a part or hangs from a
-clamp nothing holds (clearance.py; but for the spans harness.unresolved names), draw it with WireViz and picture
+clamp nothing holds (clearance.py; but for the spans harness.unresolved names) or runs into another span's cables
+(crossing.py), draw it with WireViz and picture
 its routes among the parts (picture.py) into build/fab/harness/, and hand its BOM lines to the BOM. Cached on
 everything it is made from."""
 from __future__ import annotations
@@ -15,7 +16,7 @@ from robogene_head_model.params import HeadParameters
 
 from .. import fcl_mesh
 from ..cache import Cache, digest
-from . import clearance, drawing, picture, pinout, plan, report, spec
+from . import clearance, crossing, drawing, picture, pinout, plan, report, spec
 
 # its own code, and the part meshing its clearance check (clearance.py) uses
 SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py")) + [Path(fcl_mesh.__file__)]
@@ -49,6 +50,8 @@ def build(params: HeadParameters, parts, out: Path, cache: Cache, catalog, progr
     h = plan.plan(params, spec.load(params), parts)
     progress.note("harness: the spans' clearance of the parts")
     spans_clear = clearance.check(params, h, parts, clearance.unresolved(params, h))
+    progress.note("harness: the spans' cables against each other")
+    spans_clear.crossings = crossing.check(params, h)
     folder.mkdir(parents=True, exist_ok=True)
     reports.mkdir(parents=True, exist_ok=True)
     text.write_text(report.as_text(h, spans_clear))

@@ -14,9 +14,15 @@ The curve is a model of where the cable hangs (a real cable rests on what it mee
 a part in is a span whose clamps do not lead the cable past that part; a span clear of every part is one the cable
 can take as modelled.
 
+The sweep is the span's own joints' (harness.sweep_samples each) and, harness.near_samples each, the joints
+harness.near_joints lists for them that the span does not cross: those move parts past the span without bending it
+(a neck loop with the other neck joints turned, a loop across tilt with the eyes panned). The curve keeps its shape
+in its first clamp's link and is carried with it.
+
 A clamp is a clip or tie on a part's face: each must lie outside every part of its link and within clamp_standoff
-(mm) of one of them, the part that holds it. A clamp inside a part, or further from every part of its link, has
-nothing to hold it.
+(mm) of one of them that stands in the link, the part that holds it. A clamp inside a part, or further from every
+standing part of its link, has nothing to hold it; the parts that turn in a link's own bearings (a jackshaft and the
+coupling, pulley and screws on it: jackshafts.py) stand for no clamp.
 
 The build stops on a blocked span or an unheld clamp (build.py), except for the spans harness.unresolved names,
 each with why: those are reported as blocked and known. An entry whose span is clear, or is no span of the harness,
@@ -34,7 +40,7 @@ import numpy as np
 
 from robogene_head_model.params import HeadParameters, Node
 
-from .. import fcl_mesh, kinematics
+from .. import fcl_mesh, jackshafts, kinematics
 from . import spans
 from .plan import Harness, Span, frame, sweep
 from .spec import Clamp
@@ -71,7 +77,7 @@ class SpanClearance:
 class ClampSupport:
     name: str
     link: str
-    nearest: str          # the nearest part of its link
+    nearest: str          # the nearest part of its link that stands in it ("" when none does)
     distance: float       # mm from that part's surface
     inside: str           # the part of its link it lies inside, or ""
     standoff: float
@@ -87,6 +93,7 @@ class Clearance:
     spans: list[SpanClearance]
     clamps: list[ClampSupport] = field(default_factory=list)
     unresolved: dict[tuple[str, str], str] = field(default_factory=dict)   # (a, b): why it is still blocked
+    crossings: list = field(default_factory=list)    # crossing.Crossing: spans whose cables run into each other
 
     @property
     def ok(self) -> bool:
@@ -103,16 +110,18 @@ class Clearance:
         for c in self.clamps:
             if c.inside:
                 out.append(f"clamp {c.name}: inside {c.inside} ({c.link}): nothing can hold a cable there")
+            elif not c.nearest:
+                out.append(f"clamp {c.name}: no part of {c.link} stands in the link to hold it")
             elif not c.ok:
-                out.append(f"clamp {c.name}: {c.distance:.1f} mm from the nearest part of {c.link} ({c.nearest}), more "
-                           f"than clamp_standoff {c.standoff:g} mm: nothing holds it")
+                out.append(f"clamp {c.name}: {c.distance:.1f} mm from the nearest standing part of {c.link} "
+                           f"({c.nearest}), more than clamp_standoff {c.standoff:g} mm: nothing holds it")
         for s in self.spans:
             if (s.a, s.b) not in self.unresolved:
                 out += _blocked_lines(s)
             elif s.ok:
                 out.append(f"span {s.a} -> {s.b}: clear of every part, but harness.unresolved still names it: take "
                            f"it off that list")
-        return out
+        return out + [x.text() for x in self.crossings]
 
 
 def _blocked_lines(s: SpanClearance) -> list[str]:
@@ -170,7 +179,7 @@ class _Models:
         self.links = {link: fcl_mesh.bvh(np.vstack(v), np.vstack(t)) for link, (v, t, _) in by_link.items()}
 
 
-def _basis(tangent: np.ndarray, width: np.ndarray) -> np.ndarray:
+def basis(tangent: np.ndarray, width: np.ndarray) -> np.ndarray:
     """Rotation whose z is the tangent and x the width direction (the frame FCL's capsule and box are set in)."""
     z = tangent / np.linalg.norm(tangent)
     x = width - np.dot(width, z) * z
@@ -182,7 +191,10 @@ def _touches(obj, target) -> bool:
     return fcl.collide(obj, target, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
 
 
-def clamp_supports(harness: Harness, models: _Models, standoff: float) -> list[ClampSupport]:
+def clamp_supports(harness: Harness, models: _Models, standoff: float,
+                   turning: frozenset[str] = frozenset()) -> list[ClampSupport]:
+    """turning: the parts that turn in their link's own bearings, which hold no clamp (a clamp may still not lie
+    inside one)."""
     out = []
     for name, c in harness.spec.clamps.items():
         point = fcl.CollisionObject(fcl.Sphere(1e-3), fcl.Transform(c.at))
@@ -192,7 +204,7 @@ def clamp_supports(harness: Harness, models: _Models, standoff: float) -> list[C
                 continue
             d = fcl.distance(point, fcl.CollisionObject(model, fcl.Transform()), fcl.DistanceRequest(),
                              fcl.DistanceResult())
-            if d < distance:
+            if d < distance and part.name not in turning:
                 nearest, distance = part.name, max(d, 0.0)
             # FCL measures to the mesh's surface from either side: a point that far from the surface and within the
             # solid is inside it (on the face, where a clip sits, is not).
@@ -234,7 +246,7 @@ def span_clearance(params: HeadParameters, span: Span, a: Clamp, b: Clamp, model
                 mid_s = (s[j] + s[j + 1]) / 2
                 exempt = {a.link} if mid_s < zone else set()
                 exempt |= {b.link} if span.length - mid_s < zone else set()
-                rot = _basis(q - p, widths[j])
+                rot = basis(q - p, widths[j])
                 shapes = [("bundle", fcl.Capsule(od / 2, seg))] if od else []
                 shapes += [(name, fcl.Box(w, t, seg)) for name, w, t in flats]
                 for cable, geometry in shapes:
@@ -253,6 +265,35 @@ def span_clearance(params: HeadParameters, span: Span, a: Clamp, b: Clamp, model
     return sc
 
 
+def near_joints(params: HeadParameters, joints: Sequence[str]) -> dict[str, np.ndarray]:
+    """The joints harness.near_joints lists for a span crossing `joints`, but those, each at harness.near_samples
+    angles over its range."""
+    node = params.root.node("harness")
+    table = node.node("near_joints")
+    samples = node.num("near_samples", minimum=1)
+    if samples != int(samples):
+        raise node.fail("near_samples", f"expected a whole number of samples, got {samples!r}")
+    near: set[str] = set()
+    for joint in table.keys():
+        if joint not in params.joints:
+            raise table.fail(joint, "is no joint of the head")
+    for own in joints:
+        listed = table.raw(own) if table.has(own) else []
+        if not isinstance(listed, list) or not all(isinstance(j, str) for j in listed):
+            raise table.fail(own, f"expected a list of joint names, got {listed!r}")
+        unknown = [j for j in listed if j not in params.joints]
+        if unknown:
+            raise table.fail(own, f"{unknown[0]!r} is no joint of the head")
+        near.update(listed)
+    return {j: np.linspace(params.joints[j].lower, params.joints[j].upper, int(samples))
+            for j in sorted(near - set(joints))}
+
+
+def turning_parts(params: HeadParameters, parts) -> frozenset[str]:
+    """The parts that turn in their own link's bearings (jackshafts.find): no clamp holds to them."""
+    return frozenset(name for shaft in jackshafts.find(params, list(parts)) for name in shaft.turning)
+
+
 def check(params: HeadParameters, harness: Harness, parts,
           unresolved: dict[tuple[str, str], str] | None = None) -> Clearance:
     """unresolved: the spans known to be blocked, with why (the build passes harness.unresolved's, unresolved())."""
@@ -260,6 +301,8 @@ def check(params: HeadParameters, harness: Harness, parts,
     zone = node.num("clamp_zone", minimum=0)
     models = _Models(parts)
     results = [span_clearance(params, span, harness.spec.clamps[x], harness.spec.clamps[y], models, zone,
-                              harness.spec.sweep_samples) for (x, y), span in harness.spans.items()]
-    return Clearance(zone, results, clamp_supports(harness, models, node.num("clamp_standoff", positive=True)),
-                     dict(unresolved or {}))
+                              harness.spec.sweep_samples, near_joints(params, span.joints))
+               for (x, y), span in harness.spans.items()]
+    supports = clamp_supports(harness, models, node.num("clamp_standoff", positive=True),
+                              turning_parts(params, parts))
+    return Clearance(zone, results, supports, dict(unresolved or {}))

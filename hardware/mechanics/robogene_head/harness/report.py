@@ -20,18 +20,24 @@ def clearance_json(c: Clearance) -> dict:
             "spans": [{"from": s.a, "to": s.b, "poses": s.poses, "bundle_od_mm": round(s.bundle_od, 2),
                        "flat": [{"cable": n, "width_mm": w, "thickness_mm": t} for n, w, t in s.flat],
                        "blocked": [{"part": b.part, "link": b.link, "cable": b.cable, "at_mm": round(b.at_mm, 1),
-                                    "pose": b.pose} for b in s.blocked]} for s in c.spans]}
+                                    "pose": b.pose} for b in s.blocked]} for s in c.spans],
+            "crossings": [{"first": list(x.first), "second": list(x.second), "depth_mm": round(x.depth_mm, 2),
+                           "pose": x.pose} for x in c.crossings]}
 
 
 def clearance_text(c: Clearance) -> list[str]:
-    out = ["", "Span clearance: each free span's cables along its modelled curve, over the same sweep, against every "
-           f"part (touching the clamp's own link within {c.clamp_zone:g} mm of a clamp is not counted)",
+    out = ["", "Span clearance: each free span's cables along its modelled curve, over the same sweep and the joints "
+           "near it (harness.near_joints), against every part (touching the clamp's own link within "
+           f"{c.clamp_zone:g} mm of a clamp is not counted)",
            f"{'span':<28} {'bundle (mm)':>11} {'flat cables':<26} {'poses':>6} {'parts in the way':<40}"]
     for s in c.spans:
         flats = ", ".join(n for n, _, _ in s.flat) or "-"
         parts = ", ".join(sorted({b.part for b in s.blocked})) or "none"
         out.append(f"{s.a + ' -> ' + s.b:<28} {s.bundle_od:>11.1f} {flats:<26} {s.poses:>6} {parts}")
-    out += ["", f"{'clamp':<14} {'link':<16} {'held by (nearest part)':<36} {'mm':>6}  inside"]
+    out += ["", "Cables against cables: every pair of free spans swept together (their own joints and the joints near "
+            "either), both within clamp_zone of clamps on one link not counted: "
+            + ("none touch" if not c.crossings else f"{len(c.crossings)} pair(s) touch, below")]
+    out += ["", f"{'clamp':<14} {'link':<16} {'held by (nearest standing part)':<36} {'mm':>6}  inside"]
     for k in c.clamps:
         out.append(f"{k.name:<14} {k.link:<16} {k.nearest:<36} {k.distance:>6.1f}  {k.inside or '-'}")
     if c.unresolved:
@@ -41,7 +47,7 @@ def clearance_text(c: Clearance) -> list[str]:
         out += [f"    {p}" for p in c.known]
     if c.ok:
         others = " (but the spans named above)" if c.unresolved else ""
-        out.append(f"OK: every span's cables clear the parts{others}, every clamp is held")
+        out.append(f"OK: every span's cables clear the parts{others} and each other, every clamp is held")
     else:
         out.append("NOT MET (the build stops):")
         out += [f"  {p}" for p in c.problems]

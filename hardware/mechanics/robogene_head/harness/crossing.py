@@ -1,0 +1,168 @@
+# SPDX-FileCopyrightText: 2026 Robogene contributors
+# SPDX-License-Identifier: CERN-OHL-S-2.0
+"""Whether the free spans' cables run into each other: two loops that meet at some pose rub there at every move,
+and the one on top no longer hangs as modelled.
+
+Each pair of free spans is swept together: the joints either crosses at harness.sweep_samples angles each (the
+angles its own sweep has, so each span's curve is one the plan worked out), the joints near either
+(harness.near_joints) at near_samples, each curve carried with its first clamp's link as in the span clearance
+check (clearance.py). At each pose the cables' cross-sections are laid along both curves, the round wires as one
+bundle and each flat cable as its band (clearance.bundle_od, the same shapes the parts are tested against), and any
+piece of one touching a piece of the other is a crossing: the pair, the pose and how deep the two centre lines
+come inside the sum of their radii.
+
+Where both cables lie within clamp_zone of clamps on the same link they are tied down to the same part, side by
+side as a lab lays them: that is not counted (a camera cable's two loops meet on the cable shelf this way)."""
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import fcl
+import numpy as np
+
+from robogene_head_model.params import HeadParameters
+
+from .. import kinematics
+from . import spans
+from .clearance import basis, bundle_od, near_joints
+from .plan import Harness, Span, frame, sweep
+
+POINTS = 4            # points per piece where the broad phase measures the centre lines' distance
+
+
+@dataclass(frozen=True)
+class Crossing:
+    first: tuple[str, str]       # the two spans, (clamp A, clamp B)
+    second: tuple[str, str]
+    depth_mm: float              # how far inside the sum of the two cross-sections' radii the centre lines come
+    pose: dict[str, float]
+
+    def text(self) -> str:
+        pose = ", ".join(f"{j} {v:+.1f}" for j, v in self.pose.items())
+        return (f"spans {self.first[0]} -> {self.first[1]} and {self.second[0]} -> {self.second[1]}: their cables "
+                f"run {self.depth_mm:.1f} mm into each other at {pose}")
+
+
+@dataclass
+class _Cable:
+    key: tuple[str, str]
+    span: Span
+    link: str                    # clamp A's: the curve is carried with it
+    ends: tuple[str, str]        # the links of clamps A and B
+    radius: float                # of the smallest circle round its cross-section (broad phase)
+    own: list                    # (angles, poses) of its own sweep, the order of curves
+    curves: list                 # the plan's curves, or (a span made by hand) the same worked out here
+
+
+def _cable(params: HeadParameters, h: Harness, key: tuple[str, str], span: Span, od: float) -> _Cable:
+    a, b = h.spec.clamps[key[0]], h.spec.clamps[key[1]]
+    flats = [np.hypot(c.width, c.thickness) / 2 for _, c, _ in span.members if c.shape == "flat"]
+    own = list(sweep(params, span.joints, h.spec.sweep_samples))
+    curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in own], [frame(p[b.link], b) for _, p in own],
+                                         span.length)
+    return _Cable(key, span, a.link, (a.link, b.link), max([od / 2] + flats), own, curves)
+
+
+def _shapes(cable: _Cable, od: float, seg: float) -> list:
+    out = [fcl.Capsule(od / 2, seg)] if od else []
+    return out + [fcl.Box(c.width, c.thickness, seg) for _, c, _ in cable.span.members if c.shape == "flat"]
+
+
+def _world(params: HeadParameters, cable: _Cable, samples: int, angles: dict, poses: dict):
+    """The cable's curve at these joint angles in the neck base's frame: the points and the width directions."""
+    index = 0
+    for j in cable.span.joints:
+        values = np.linspace(params.joints[j].lower, params.joints[j].upper, samples)
+        index = index * samples + int(np.argmin(np.abs(values - angles[j])))
+    curve = cable.curves[index]
+    carry = poses[cable.link] @ np.linalg.inv(cable.own[index][1][cable.link])
+    return (curve, curve.points @ carry[:3, :3].T + carry[:3, 3], curve.widths @ carry[:3, :3].T)
+
+
+def _tied(cable: _Cable, curve, zone: float) -> tuple[np.ndarray, np.ndarray]:
+    """Per piece: within zone of clamp A, within zone of clamp B (along the curve)."""
+    s = spans.arc_lengths(curve)
+    mid = (s[:-1] + s[1:]) / 2
+    return mid < zone, cable.span.length - mid < zone
+
+
+def _pieces(points: np.ndarray) -> np.ndarray:
+    t = np.linspace(0.0, 1.0, POINTS)
+    return points[:-1, None, :] * (1 - t)[None, :, None] + points[1:, None, :] * t[None, :, None]
+
+
+def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, od: tuple[float, float], zone: float,
+                  samples: int, near: dict[str, Sequence[float]]) -> Crossing | None:
+    """The deepest touch of two spans' cables over their sweep together, None if they never touch."""
+    own = sorted(set(first.span.joints) | set(second.span.joints))
+    grid = {j: np.linspace(params.joints[j].lower, params.joints[j].upper, samples) for j in own}
+    grid.update({j: v for j, v in near.items() if j not in grid})
+    worst: Crossing | None = None
+    reach = first.radius + second.radius
+    for values in itertools.product(*grid.values()):
+        angles = {j: float(v) for j, v in zip(grid, values)}
+        poses = kinematics.link_poses(params, angles)
+        c1, p1, w1 = _world(params, first, samples, angles, poses)
+        c2, p2, w2 = _world(params, second, samples, angles, poses)
+        # broad phase: the two curves' bounding spheres, then every piece's points against the other's
+        m1, m2 = p1.mean(axis=0), p2.mean(axis=0)
+        r1, r2 = np.linalg.norm(p1 - m1, axis=1).max(), np.linalg.norm(p2 - m2, axis=1).max()
+        if np.linalg.norm(m1 - m2) > r1 + r2 + reach:
+            continue
+        q1, q2 = _pieces(p1), _pieces(p2)
+        x, y = q1.reshape(-1, 3), q2.reshape(-1, 3)
+        d2 = (x * x).sum(1)[:, None] + (y * y).sum(1)[None, :] - 2 * x @ y.T
+        d = np.sqrt(np.maximum(d2, 0)).reshape(len(q1), POINTS, len(q2), POINTS).min(axis=(1, 3))
+        close = np.nonzero(d < reach)
+        if not len(close[0]):
+            continue
+        near_a1, near_b1 = _tied(first, c1, zone)
+        near_a2, near_b2 = _tied(second, c2, zone)
+        for i, j in zip(*close):
+            tied = {first.ends[0]} if near_a1[i] else set()
+            tied |= {first.ends[1]} if near_b1[i] else set()
+            other = {second.ends[0]} if near_a2[j] else set()
+            other |= {second.ends[1]} if near_b2[j] else set()
+            if tied & other:
+                continue
+            if not _touch(first, second, od, (p1, w1, i), (p2, w2, j)):
+                continue
+            depth = float(reach - d[i, j])
+            if worst is None or depth > worst.depth_mm:
+                worst = Crossing(first.key, second.key, depth, {k: round(v, 1) for k, v in angles.items()})
+    return worst
+
+
+def _objects(cable: _Cable, od: float, points: np.ndarray, widths: np.ndarray, i: int) -> list:
+    p, q = points[i], points[i + 1]
+    seg = float(np.linalg.norm(q - p))
+    rot = basis(q - p, widths[i])
+    return [fcl.CollisionObject(g, fcl.Transform(rot, (p + q) / 2)) for g in _shapes(cable, od, seg)]
+
+
+def _touch(first: _Cable, second: _Cable, od: tuple[float, float], at1, at2) -> bool:
+    for x in _objects(first, od[0], *at1):
+        for y in _objects(second, od[1], *at2):
+            if fcl.collide(x, y, fcl.CollisionRequest(), fcl.CollisionResult()) > 0:
+                return True
+    return False
+
+
+def check(params: HeadParameters, harness: Harness) -> list[Crossing]:
+    """Every pair of free spans whose cables touch, with the deepest touch of each."""
+    zone = params.root.node("harness").num("clamp_zone", minimum=0)
+    samples = harness.spec.sweep_samples
+    cables, ods = [], {}
+    for key, span in harness.spans.items():
+        od = bundle_od(span)
+        cables.append(_cable(params, harness, key, span, od))
+        ods[key] = od
+    out = []
+    for first, second in itertools.combinations(cables, 2):
+        near = near_joints(params, tuple(sorted(set(first.span.joints) | set(second.span.joints))))
+        found = pair_crossing(params, first, second, (ods[first.key], ods[second.key]), zone, samples, near)
+        if found is not None:
+            out.append(found)
+    return out
