@@ -52,8 +52,12 @@ def _actor(shape, color, alpha=1.0):
     return actor
 
 
-def stage(size, bottom, top):
-    """An off-screen window of size (px) with one renderer on a gradient background, bottom to top colour."""
+BACKGROUND = ((0.97, 0.97, 0.98), (0.82, 0.86, 0.92))    # the package's pictures' gradient, bottom to top
+
+
+def stage(size):
+    """An off-screen window of size (px) with one renderer on the pictures' gradient background (BACKGROUND)."""
+    bottom, top = BACKGROUND
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(*size)
@@ -91,7 +95,7 @@ def shoot(window, renderer, focus: np.ndarray, distance: float, azimuth: float, 
 
 
 def render(assembly: Assembly, view: View, path: Path, size=(800, 640)) -> None:
-    window, renderer = stage(size, (0.97, 0.97, 0.98), (0.82, 0.86, 0.92))
+    window, renderer = stage(size)
     unknown = set(view.hidden) - {p.name for p in assembly.parts}
     if unknown:
         raise ValueError(f"view {view.name}: no part named {', '.join(sorted(unknown))}")

@@ -42,7 +42,7 @@ from robogene_head_model.params import HeadParameters, Node
 
 from .. import fcl_mesh, jackshafts, kinematics
 from . import spans
-from .plan import Harness, Span, frame, sweep
+from .plan import Harness, Span, swept_curves
 from .spec import Clamp
 
 PACKING = 0.65            # share of a loose bundle's circle its wires fill
@@ -187,6 +187,18 @@ def basis(tangent: np.ndarray, width: np.ndarray) -> np.ndarray:
     return np.column_stack([x, np.cross(z, x), z])
 
 
+def flat_cables(span: Span) -> tuple[tuple[str, float, float], ...]:
+    """(cable, width, thickness) of each flat cable through the span."""
+    return tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
+
+
+def sections(od: float, flats: Sequence[tuple[str, float, float]], seg: float) -> list[tuple[str, object]]:
+    """The cables' cross-sections along one piece `seg` long, as FCL shapes in the piece's basis (z along it, x
+    across a flat cable's width): the round wires' bundle as a capsule ("bundle"), each flat cable as its band."""
+    out = [("bundle", fcl.Capsule(od / 2, seg))] if od else []
+    return out + [(name, fcl.Box(w, t, seg)) for name, w, t in flats]
+
+
 def _touches(obj, target) -> bool:
     return fcl.collide(obj, target, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
 
@@ -221,13 +233,10 @@ def span_clearance(params: HeadParameters, span: Span, a: Clamp, b: Clamp, model
     is carried along with it."""
     near = near or {}
     od = bundle_od(span)
-    flats = tuple((name, cls.width, cls.thickness) for name, cls, _ in span.members if cls.shape == "flat")
+    flats = flat_cables(span)
     sc = SpanClearance(a.name, b.name, od, flats, 0)
     seen: set[tuple[str, str]] = set()
-    swept = list(sweep(params, span.joints, samples))
-    # The plan's curves, or (a span made by hand) the same curves worked out here.
-    curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in swept],
-                                         [frame(p[b.link], b) for _, p in swept], span.length)
+    swept, curves = swept_curves(params, span, a, b, samples)
     for (own_angles, own), c in zip(swept, curves):
         for values in itertools.product(*near.values()):
             angles, poses, points, widths = own_angles, own, c.points, c.widths
@@ -247,9 +256,7 @@ def span_clearance(params: HeadParameters, span: Span, a: Clamp, b: Clamp, model
                 exempt = {a.link} if mid_s < zone else set()
                 exempt |= {b.link} if span.length - mid_s < zone else set()
                 rot = basis(q - p, widths[j])
-                shapes = [("bundle", fcl.Capsule(od / 2, seg))] if od else []
-                shapes += [(name, fcl.Box(w, t, seg)) for name, w, t in flats]
-                for cable, geometry in shapes:
+                for cable, geometry in sections(od, flats, seg):
                     obj = fcl.CollisionObject(geometry, fcl.Transform(rot, (p + q) / 2))
                     for link, target in links.items():
                         if link in exempt or not _touches(obj, target):

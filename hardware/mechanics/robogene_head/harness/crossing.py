@@ -26,8 +26,8 @@ from robogene_head_model.params import HeadParameters
 
 from .. import kinematics
 from . import spans
-from .clearance import basis, bundle_od, near_joints
-from .plan import Harness, Span, frame, sweep
+from .clearance import basis, bundle_od, flat_cables, near_joints, sections
+from .plan import Harness, Span, swept_curves
 
 POINTS = 4            # points per piece where the broad phase measures the centre lines' distance
 
@@ -51,23 +51,21 @@ class _Cable:
     span: Span
     link: str                    # clamp A's: the curve is carried with it
     ends: tuple[str, str]        # the links of clamps A and B
-    radius: float                # of the smallest circle round its cross-section (broad phase)
+    od: float                    # the round wires' bundle (clearance.bundle_od), 0 without
+    flats: tuple                 # (cable, width, thickness) of each flat cable
     own: list                    # (angles, poses) of its own sweep, the order of curves
-    curves: list                 # the plan's curves, or (a span made by hand) the same worked out here
+    curves: list                 # its curve at each pose of that sweep
+
+    @property
+    def radius(self) -> float:
+        """Of the smallest circle round its cross-section (the broad phase)."""
+        return max([self.od / 2] + [np.hypot(w, t) / 2 for _, w, t in self.flats])
 
 
-def _cable(params: HeadParameters, h: Harness, key: tuple[str, str], span: Span, od: float) -> _Cable:
+def _cable(params: HeadParameters, h: Harness, key: tuple[str, str], span: Span) -> _Cable:
     a, b = h.spec.clamps[key[0]], h.spec.clamps[key[1]]
-    flats = [np.hypot(c.width, c.thickness) / 2 for _, c, _ in span.members if c.shape == "flat"]
-    own = list(sweep(params, span.joints, h.spec.sweep_samples))
-    curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in own], [frame(p[b.link], b) for _, p in own],
-                                         span.length)
-    return _Cable(key, span, a.link, (a.link, b.link), max([od / 2] + flats), own, curves)
-
-
-def _shapes(cable: _Cable, od: float, seg: float) -> list:
-    out = [fcl.Capsule(od / 2, seg)] if od else []
-    return out + [fcl.Box(c.width, c.thickness, seg) for _, c, _ in cable.span.members if c.shape == "flat"]
+    own, curves = swept_curves(params, span, a, b, h.spec.sweep_samples)
+    return _Cable(key, span, a.link, (a.link, b.link), bundle_od(span), flat_cables(span), own, curves)
 
 
 def _world(params: HeadParameters, cable: _Cable, samples: int, angles: dict, poses: dict):
@@ -93,8 +91,8 @@ def _pieces(points: np.ndarray) -> np.ndarray:
     return points[:-1, None, :] * (1 - t)[None, :, None] + points[1:, None, :] * t[None, :, None]
 
 
-def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, od: tuple[float, float], zone: float,
-                  samples: int, near: dict[str, Sequence[float]]) -> Crossing | None:
+def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, zone: float, samples: int,
+                  near: dict[str, Sequence[float]]) -> Crossing | None:
     """The deepest touch of two spans' cables over their sweep together, None if they never touch."""
     own = sorted(set(first.span.joints) | set(second.span.joints))
     grid = {j: np.linspace(params.joints[j].lower, params.joints[j].upper, samples) for j in own}
@@ -127,7 +125,7 @@ def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, od: tup
             other |= {second.ends[1]} if near_b2[j] else set()
             if tied & other:
                 continue
-            if not _touch(first, second, od, (p1, w1, i), (p2, w2, j)):
+            if not _touch(first, (p1, w1, i), second, (p2, w2, j)):
                 continue
             depth = float(reach - d[i, j])
             if worst is None or depth > worst.depth_mm:
@@ -135,16 +133,17 @@ def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, od: tup
     return worst
 
 
-def _objects(cable: _Cable, od: float, points: np.ndarray, widths: np.ndarray, i: int) -> list:
+def _objects(cable: _Cable, points: np.ndarray, widths: np.ndarray, i: int) -> list:
+    """The cable's cross-sections along its piece i, placed."""
     p, q = points[i], points[i + 1]
     seg = float(np.linalg.norm(q - p))
     rot = basis(q - p, widths[i])
-    return [fcl.CollisionObject(g, fcl.Transform(rot, (p + q) / 2)) for g in _shapes(cable, od, seg)]
+    return [fcl.CollisionObject(g, fcl.Transform(rot, (p + q) / 2)) for _, g in sections(cable.od, cable.flats, seg)]
 
 
-def _touch(first: _Cable, second: _Cable, od: tuple[float, float], at1, at2) -> bool:
-    for x in _objects(first, od[0], *at1):
-        for y in _objects(second, od[1], *at2):
+def _touch(first: _Cable, at1, second: _Cable, at2) -> bool:
+    for x in _objects(first, *at1):
+        for y in _objects(second, *at2):
             if fcl.collide(x, y, fcl.CollisionRequest(), fcl.CollisionResult()) > 0:
                 return True
     return False
@@ -154,15 +153,11 @@ def check(params: HeadParameters, harness: Harness) -> list[Crossing]:
     """Every pair of free spans whose cables touch, with the deepest touch of each."""
     zone = params.root.node("harness").num("clamp_zone", minimum=0)
     samples = harness.spec.sweep_samples
-    cables, ods = [], {}
-    for key, span in harness.spans.items():
-        od = bundle_od(span)
-        cables.append(_cable(params, harness, key, span, od))
-        ods[key] = od
+    cables = [_cable(params, harness, key, span) for key, span in harness.spans.items()]
     out = []
     for first, second in itertools.combinations(cables, 2):
         near = near_joints(params, tuple(sorted(set(first.span.joints) | set(second.span.joints))))
-        found = pair_crossing(params, first, second, (ods[first.key], ods[second.key]), zone, samples, near)
+        found = pair_crossing(params, first, second, zone, samples, near)
         if found is not None:
             out.append(found)
     return out

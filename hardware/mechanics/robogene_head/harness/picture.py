@@ -88,7 +88,7 @@ def _span_actors(c: spans.Curve, od: float, flats: list[tuple[float, float]]) ->
 
 def draw(params: HeadParameters, harness: Harness, parts, picture: Picture, path: Path, size=(800, 640)) -> None:
     rest = kinematics.link_poses(params, {})
-    window, renderer = render.stage(size, (0.97, 0.97, 0.98), (0.82, 0.86, 0.92))
+    window, renderer = render.stage(size)
     for p in parts:
         if p.link in picture.links and not p.name.startswith(picture.hidden) and p.kind != "board":
             for _, shape, color in p.pieces(p.shape.moved(geom.location(rest[p.link]))):

@@ -110,6 +110,15 @@ def sweep(params: HeadParameters, joints: tuple[str, ...], samples: int):
         yield angles, kinematics.link_poses(params, angles)
 
 
+def swept_curves(params: HeadParameters, span: Span, a: Clamp, b: Clamp, samples: int) -> tuple[list, list]:
+    """The span's own sweep ((angles, link poses) per pose) and its curve at each: the plan's, or (a span made by
+    hand) the same curves worked out here."""
+    swept = list(sweep(params, span.joints, samples))
+    curves = span.curves or spans.curves([frame(p[a.link], a) for _, p in swept],
+                                         [frame(p[b.link], b) for _, p in swept], span.length)
+    return swept, curves
+
+
 def check_span(params: HeadParameters, spec: HarnessSpec, a: Clamp, b: Clamp, users: list[tuple[str, CableClass, int]]) -> Span:
     """users: (cable name, class, wires) of every cable through the span."""
     joints = _path_joints(params, a.link, b.link)
