@@ -55,9 +55,9 @@ def _actor(shape, color, alpha=1.0):
 BACKGROUND = ((0.97, 0.97, 0.98), (0.82, 0.86, 0.92))    # the package's pictures' gradient, bottom to top
 
 
-def stage(size):
-    """An off-screen window of size (px) with one renderer on the pictures' gradient background (BACKGROUND)."""
-    bottom, top = BACKGROUND
+def stage(size, background=BACKGROUND):
+    """An off-screen window of size (px) with one renderer on a gradient background (bottom, top colours)."""
+    bottom, top = background
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(*size)

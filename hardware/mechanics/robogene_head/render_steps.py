@@ -19,6 +19,7 @@ NEW = (0.95, 0.45, 0.1)
 SCREWS = (0.15, 0.35, 0.85)
 ARROW = (0.85, 0.1, 0.1)
 SIZE = (720, 540)
+STEP_BACKGROUND = ((1, 1, 1), (0.86, 0.89, 0.94))    # lighter than the views: the step's new part stands out
 
 
 class _Meshes:
@@ -87,7 +88,7 @@ def _arrow(points: list[np.ndarray], radius: float):
 
 
 def render_step(meshes: _Meshes, step: Step, placed: list[str], path: Path) -> None:
-    window, renderer = stage(SIZE, (1, 1, 1), (0.86, 0.89, 0.94))
+    window, renderer = stage(SIZE, STEP_BACKGROUND)
     for name in placed:
         renderer.AddActor(_actor(meshes.poly(name), GREY, 0.55 if placed and step.parts else 1.0))
     for name in step.parts:
