@@ -66,3 +66,41 @@ def test_the_harness_key_does_not_change_when_the_parts_are_meshed(params):
     before = _key(params, parts, catalog.load(), "geometry")
     _meshed(parts[0].shape)
     assert _key(params, parts, catalog.load(), "geometry") == before
+
+
+def _probe_package(root: Path) -> None:
+    """A package named like this one: a imports b (a function of it), b imports parts.c; d is imported by no one."""
+    pkg = root / "robogene_head_probe"
+    (pkg / "parts").mkdir(parents=True)
+    files = {"__init__.py": "", "a.py": "from .b import helper\n", "b.py": "from .parts import c\n\ndef helper():\n"
+             "    return c.SIZE\n", "d.py": "X = 1\n", "parts/__init__.py": "", "parts/c.py": "SIZE = 3\n"}
+    for name, text in files.items():
+        (pkg / name).write_text(text)
+
+
+def test_a_code_digest_follows_imports_into_the_package(tmp_path, monkeypatch):
+    from robogene_head.cache import code_digest
+    _probe_package(tmp_path)
+    monkeypatch.syspath_prepend(str(tmp_path))
+    import importlib
+    a = importlib.import_module("robogene_head_probe.a")
+    importlib.import_module("robogene_head_probe.d")
+    before = code_digest(a)
+    pkg = tmp_path / "robogene_head_probe"
+    (pkg / "d.py").write_text("X = 2\n")                    # not used by a
+    (pkg / "parts" / "c.py").write_text("SIZE = 4\n")       # a part builder: its shapes are hashed, not its code
+    assert code_digest(a) == before
+    (pkg / "b.py").write_text((pkg / "b.py").read_text() + "# changed\n")    # used by a, through a function
+    assert code_digest(a) != before
+    for name in [m for m in sys.modules if m.startswith("robogene_head_probe")]:
+        monkeypatch.delitem(sys.modules, name)
+
+
+def test_the_pictures_keys_see_the_renderer():
+    """The renderer's stage() changed under the step pictures and the harness picture, whose keys did not see
+    render.py: a warm build kept the old pictures and only a fresh build ran the broken call."""
+    from robogene_head import render_steps
+    from robogene_head.cache import code_modules
+    from robogene_head.harness import build
+    assert "robogene_head.render" in code_modules(render_steps)
+    assert {"robogene_head.render", "robogene_head.fcl_mesh"} <= set(code_modules(build))

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import hashlib
 import json
+import sys
+import types
 from pathlib import Path
 
 
@@ -35,3 +37,34 @@ class Cache:
         tmp = self.path.with_suffix(".tmp")
         tmp.write_text(json.dumps(self.state, indent=1, sort_keys=True))
         tmp.replace(self.path)
+
+
+# Part builders (robogene_head.parts.*) are left out of code digests: what they make is hashed shape by shape in
+# the geometry key.
+_GEOMETRY_PACKAGE = "parts"
+
+
+def code_modules(*modules) -> dict[str, Path]:
+    """These modules and every module of this package they use, followed through their imports (name -> file)."""
+    seen: dict[str, Path] = {}
+    todo = list(modules)
+    while todo:
+        module = todo.pop()
+        name = module.__name__
+        if name in seen or not name.startswith("robogene_head") or name.split(".")[1:2] == [_GEOMETRY_PACKAGE]:
+            continue
+        seen[name] = Path(module.__file__)
+        for value in vars(module).values():
+            used = value if isinstance(value, types.ModuleType) else sys.modules.get(getattr(value, "__module__", "")
+                                                                                    or "")
+            if isinstance(used, types.ModuleType):
+                todo.append(used)
+    return seen
+
+
+def code_digest(*modules) -> str:
+    """A digest of the source of code_modules(*modules): a cached output drawn by code that imports what changed is
+    stale too (the step pictures once kept a stage() call that render.py no longer had, and only a fresh build ran
+    it)."""
+    files = code_modules(*modules)
+    return digest(*[(name, hashlib.sha256(files[name].read_bytes()).hexdigest()) for name in sorted(files)])

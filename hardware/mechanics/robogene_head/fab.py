@@ -23,11 +23,11 @@ from robogene_head_model import joint_config
 from robogene_head_model.params import ParameterError, load
 
 from . import external as external_mod
-from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fcl_mesh, fits, freecad, kinematics,
+from . import (bearing_arrangement, bearing_loads, drive_sizing, eye_accuracy, fits, freecad, kinematics,
                massprops, openscad, render, render_steps, sequence, threads, torque_path, unpowered, urdf)
 from .assembly import Assembly
 from .board_model import BoardModelError
-from .cache import Cache, digest
+from .cache import Cache, code_digest, digest
 from .checks import assembly_sequence, board_bay, interference, joint_encoders, mesh, validity
 from .export import link_solid, shape_hash, write_step, write_stl
 from .harness import build as harness_build
@@ -259,7 +259,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     # 7. Interference and clearance over the joint sweep (the slow step: cached on the geometry).
     inter_out = [out / "reports" / "interference.txt", out / "reports" / "interference.json"]
     # A change to the checker itself (or to how it meshes the parts) must re-run it, as a change to the geometry does.
-    inter_key = digest(geometry_key, _source_hash(interference), _source_hash(fcl_mesh),
+    inter_key = digest(geometry_key, code_digest(interference),
                        [(q.part.name, shape_hash(q.part.local), _placement_key(q.part)) for q in plugs])
     if not cache.fresh("interference", inter_key, inter_out):
         poses = interference.sweep_poses(params)
@@ -309,8 +309,7 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
 
     # 9. Renders at a few joint poses.
     render_out = [out / "renders" / f"{view.name}.png" for view in render.VIEWS]
-    render_key = digest(geometry_key, [vars(v) for v in render.VIEWS],
-                        hashlib.sha256(Path(render.__file__).read_bytes()).hexdigest())
+    render_key = digest(geometry_key, [vars(v) for v in render.VIEWS], code_digest(render))
     if not cache.fresh("renders", render_key, render_out):
         for i, view in enumerate(render.VIEWS):
             progress.step("render", i, len(render.VIEWS), view.name)
@@ -332,18 +331,13 @@ def build(out: Path, params_path: Path | None, board_boms: list[Path], batch: in
     return manifest
 
 
-def _source_hash(module) -> str:
-    return hashlib.sha256(Path(module.__file__).read_bytes()).hexdigest()
-
-
 def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, assembly, geometry_key: str,
                        sequence_path: Path | None = None) -> None:
     """Check the assembly sequence (BuildError naming the step and the parts on failure), then draw its steps."""
     with _fails_build(sequence.SequenceError):
         seq = sequence.load([p.name for p in assembly.parts], sequence_path)
     reports = [out / "reports" / "assembly.txt", out / "reports" / "assembly.json"]
-    key = digest(geometry_key, seq.path.read_bytes(), _source_hash(assembly_sequence), _source_hash(fcl_mesh),
-                 _source_hash(sequence), _source_hash(fits), params.path.read_bytes())
+    key = digest(geometry_key, seq.path.read_bytes(), code_digest(assembly_sequence), params.path.read_bytes())
     if not cache.fresh("assembly-sequence", key, reports):
         report = assembly_sequence.check(params, assembly, seq,
                                          progress=lambda i, n, label: progress.step("assembly", i, n, label))
@@ -358,7 +352,7 @@ def _assembly_sequence(out: Path, cache: Cache, progress: Progress, params, asse
     steps = seq.steps()
     pictures = [folder / s.picture(i + 1) for i, s in enumerate(steps)]
     page = folder / "README.md"
-    picture_key = digest(key, _source_hash(render_steps))
+    picture_key = digest(key, code_digest(render_steps))
     if not cache.fresh("assembly-steps", picture_key, pictures + [page]):
         render_steps.render_all(assembly, seq, folder,
                                 progress=lambda i, n, label: progress.step("steps", i, n, label))

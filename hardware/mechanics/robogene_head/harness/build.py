@@ -10,16 +10,13 @@ from __future__ import annotations
 
 import hashlib
 import json
+import sys
 from pathlib import Path
 
 from robogene_head_model.params import HeadParameters
 
-from .. import fcl_mesh
-from ..cache import Cache, digest
+from ..cache import Cache, code_digest, digest
 from . import clearance, crossing, drawing, picture, pinout, plan, report, spec
-
-# its own code, and the part meshing its clearance check (clearance.py) uses
-SOURCES = sorted(Path(__file__).resolve().parent.glob("*.py")) + [Path(fcl_mesh.__file__)]
 
 
 class HarnessError(RuntimeError):
@@ -30,8 +27,8 @@ def _key(params: HeadParameters, parts, catalog, geometry: str) -> str:
     """Everything the harness is made from: parameters, its code, the board's pinout sources, the catalog (the
     drawings name the mating parts by MPN), and every part's geometry, link and placement (`geometry`, the caller's
     digest of them: the cables' far ends are parts' centres, and the spans' clearance depends on all parts)."""
-    code = [hashlib.sha256(p.read_bytes()).hexdigest() for p in SOURCES]
-    code.append(hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest())
+    # its own code and all it uses (the part meshing of clearance.py, the picture's stage in render.py)
+    code = [code_digest(sys.modules[__name__]), hashlib.sha256(Path(catalog.path).read_bytes()).hexdigest()]
     board = [hashlib.sha256(p.read_bytes()).hexdigest() for p in (pinout.PCB, pinout.GENERATOR / "design.py")]
     return digest(params.path.read_bytes(), code, board, [p.name for p in parts], geometry)
 
