@@ -26,11 +26,9 @@ from robogene_head_model.params import HeadParameters
 
 from .. import kinematics
 from . import spans
+from .segments import piece_distances
 from .clearance import basis, bundle_od, flat_cables, near_joints, sections
 from .plan import Harness, Span, swept_curves
-
-POINTS = 4            # points per piece where the broad phase measures the centre lines' distance
-
 
 @dataclass(frozen=True)
 class Crossing:
@@ -86,11 +84,6 @@ def _tied(cable: _Cable, curve, zone: float) -> tuple[np.ndarray, np.ndarray]:
     return mid < zone, cable.span.length - mid < zone
 
 
-def _pieces(points: np.ndarray) -> np.ndarray:
-    t = np.linspace(0.0, 1.0, POINTS)
-    return points[:-1, None, :] * (1 - t)[None, :, None] + points[1:, None, :] * t[None, :, None]
-
-
 def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, zone: float, samples: int,
                   near: dict[str, Sequence[float]]) -> Crossing | None:
     """The deepest touch of two spans' cables over their sweep together, None if they never touch."""
@@ -104,15 +97,12 @@ def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, zone: f
         poses = kinematics.link_poses(params, angles)
         c1, p1, w1 = _world(params, first, samples, angles, poses)
         c2, p2, w2 = _world(params, second, samples, angles, poses)
-        # broad phase: the two curves' bounding spheres, then every piece's points against the other's
+        # broad phase: the two curves' bounding spheres, then every piece's centre line against the other's
         m1, m2 = p1.mean(axis=0), p2.mean(axis=0)
         r1, r2 = np.linalg.norm(p1 - m1, axis=1).max(), np.linalg.norm(p2 - m2, axis=1).max()
         if np.linalg.norm(m1 - m2) > r1 + r2 + reach:
             continue
-        q1, q2 = _pieces(p1), _pieces(p2)
-        x, y = q1.reshape(-1, 3), q2.reshape(-1, 3)
-        d2 = (x * x).sum(1)[:, None] + (y * y).sum(1)[None, :] - 2 * x @ y.T
-        d = np.sqrt(np.maximum(d2, 0)).reshape(len(q1), POINTS, len(q2), POINTS).min(axis=(1, 3))
+        d = piece_distances(p1, p2)
         close = np.nonzero(d < reach)
         if not len(close[0]):
             continue
