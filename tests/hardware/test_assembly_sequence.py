@@ -10,6 +10,7 @@ import json
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 from OCP.BRepMesh import BRepMesh_IncrementalMesh
@@ -314,3 +315,21 @@ def test_a_mesh_left_on_the_parts_does_not_change_the_result(params):
     fresh = run(False)
     assert fresh[2][3] == "ball x post" and 1.0 < fresh[2][2] < 1.5     # 1.5 mm apart, less the meshes' allowance
     assert run(True) == fresh
+
+
+def _meshed_faces(shape) -> int:
+    from OCP.BRep import BRep_Tool
+    from OCP.TopLoc import TopLoc_Location
+    return sum(BRep_Tool.Triangulation_s(f.wrapped, TopLoc_Location()) is not None for f in shape.Faces())
+
+
+def test_exact_distances_are_measured_on_meshed_copies(params):
+    """OpenCASCADE's exact distance bounds a face by its triangles where it has them and by its surface's control
+    points where not: on a part whose STL came from the cache (never meshed in this build) one step took minutes
+    instead of seconds. The check measures meshed copies, and leaves the parts as they were."""
+    ball = Part("ball", "ball", "neck_base", "machined", geom.sphere(7), loc(0, 0, 12), material="aluminium-6082")
+    world = chk._World(Assembly(params, [ball]))
+    measured = world.shape("ball")
+    assert _meshed_faces(measured) == len(measured.Faces()) > 0
+    assert _meshed_faces(ball.shape) == 0 and _meshed_faces(world.placed["ball"].shape) == 0
+    assert _meshed_faces(world.shape("ball", np.array([0.0, 0, 5]))) == len(measured.Faces())

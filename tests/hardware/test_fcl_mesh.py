@@ -26,7 +26,7 @@ def test_meshing_leaves_the_shapes_bounding_box_alone(make):
     fcl_mesh.triangles(shape, 0.1, 0.3)
     assert _box(shape) == before
     # A placed shape shares its faces with the part: meshing it through a copy leaves the part alone too.
-    fcl_mesh.shape_bvh(shape.moved(cq.Location(cq.Vector(5, 0, 0))), 0.1, 0.3)
+    fcl_mesh.meshed_copy(shape.moved(cq.Location(cq.Vector(5, 0, 0))), 0.1, 0.3)
     assert _box(shape) == before
 
 
@@ -39,7 +39,7 @@ def test_the_mesh_is_tessellates_own():
 
 
 def test_the_model_measures_mesh_distances():
-    model = fcl_mesh.shape_bvh(geom.sphere(7), 0.1, 0.3)
+    model = fcl_mesh.bvh(*fcl_mesh.triangles(geom.sphere(7), 0.1, 0.3))
     a = fcl.CollisionObject(model, fcl.Transform())
     b = fcl.CollisionObject(model, fcl.Transform(np.array([20.0, 0, 0])))
     assert geom.mesh_distance(a, b) == pytest.approx(6.0, abs=0.2)     # 20 mm apart less two radii, to the mesh

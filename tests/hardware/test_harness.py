@@ -14,7 +14,7 @@ import pytest
 import yaml
 
 from robogene_head_model import params as params_mod
-from robogene_head.harness import build as harness_build, drawing, pinout, plan, spans, spec
+from robogene_head.harness import build as harness_build, drawing, picture, pinout, plan, spans, spec
 from robogene_head.parts import eyes, head_frame, joint_encoders, neck
 
 from param_variants import edited
@@ -282,8 +282,9 @@ def test_package_holds_the_harness(fab, params):
 
 
 def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path):
-    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them; a changed
-    geometry re-measures the spans' clearance."""
+    """The drawings name the housings and crimps by their catalog MPN: a changed catalog redraws them, and only them
+    (two full builds, not three: the test ran over its time limit on a loaded machine); a changed geometry
+    re-measures the spans' clearance."""
     from robogene_bom import catalog
     from robogene_head.cache import Cache
     from robogene_head.progress import Progress
@@ -297,12 +298,19 @@ def test_the_harness_is_rebuilt_when_the_catalog_changes(params, parts, tmp_path
     data["parts"]["jst-PHR-4"]["mpn"] = "PHR-4-OTHER"
     changed = tmp_path / "catalog.yaml"
     changed.write_text(yaml.safe_dump(data))
+    report_before = (out / "reports" / "harness.txt").read_text()
     harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log), "geometry")
     assert log.getvalue().count("harness: unchanged") == 1
     assert "PHR-4-OTHER" in html.unescape((out / "harness" / "harness-neck-pitch-roll.svg").read_text())
+    # only the drawings: the spans are not swept again for a catalog, and the checks' report stands
+    assert log.getvalue().count("harness: sweeping") == 1
+    assert log.getvalue().count("checks unchanged; WireViz drawings for the changed catalog") == 1
+    assert (out / "reports" / "harness.txt").read_text() == report_before
+    assert all((out / "harness" / f"{pic.name}.png").exists() for pic in picture.PICTURES)
     # The spans' clearance depends on every part's shape: a changed geometry digest measures it again.
     harness_build.build(params, parts, out, cache, catalog.load(changed), Progress(log), "geometry, a part moved")
     assert log.getvalue().count("harness: unchanged") == 1
+    assert log.getvalue().count("harness: sweeping") == 2
 
 
 def test_every_brake_has_its_cable(params, parts):

@@ -102,9 +102,11 @@ class _World:
 
     def __init__(self, assembly: Assembly):
         self.placed: dict[str, Placed] = {p.part.name: p for p in assembly.pose({})}
-        self.models, self.boxes, self.frames = {}, {}, {}
+        self.models, self.boxes, self.frames, self.copies = {}, {}, {}, {}
         for name, p in self.placed.items():
-            self.models[name] = fcl_mesh.shape_bvh(p.shape, MESH_DEFLECTION, 0.3)
+            # measured on a meshed copy: as fast whether or not the build exported the part before (a cached STL)
+            self.copies[name], vertices, triangles = fcl_mesh.meshed_copy(p.shape, MESH_DEFLECTION, 0.3)
+            self.models[name] = fcl_mesh.bvh(vertices, triangles)
             # From the geometry alone: BoundingBox() bounds a triangulation when the part has one (the assembly's GLB
             # export meshes every part when the geometry changed), and the check would depend on that.
             self.boxes[name] = geom.exact_bounds(p.shape)
@@ -114,7 +116,7 @@ class _World:
         return fcl.CollisionObject(self.models[name], fcl.Transform(np.eye(3), np.asarray(offset, dtype=float)))
 
     def shape(self, name: str, offset=np.zeros(3)) -> cq.Shape:
-        s = self.placed[name].shape
+        s = self.copies[name]
         return s.moved(cq.Location(cq.Vector(*offset))) if np.any(offset) else s
 
     def bbox(self, names, offset=np.zeros(3)):

@@ -18,12 +18,14 @@ import fnmatch
 import itertools
 from dataclasses import dataclass, field
 
+import cadquery as cq
 import fcl
 import numpy as np
 
 from robogene_head_model.params import CONTROL_JOINTS, HeadParameters
 
 from .. import fcl_mesh, geom
+from ..geom import location
 from ..assembly import Assembly, Placed
 
 VOLUME_TOLERANCE = 0.5   # mm^3: below this a common volume is boolean noise on touching faces
@@ -100,14 +102,20 @@ class Report:
 
 
 class _Meshes:
-    """FCL models of every part in its link frame, built once."""
+    """FCL models of every part in its link frame, built once, and the meshed copies the exact distance is measured on
+    (as fast whether or not the build exported the part before, fcl_mesh.meshed_copy)."""
 
     def __init__(self, parts):
-        self.models, self.vertices = [], []
+        self.models, self.vertices, self.copies = [], [], []
         for part in parts:
-            v, t = fcl_mesh.triangles(part.shape, MESH_DEFLECTION, 0.2)
+            copy, v, t = fcl_mesh.meshed_copy(part.shape, MESH_DEFLECTION, 0.2)
             self.models.append(fcl_mesh.bvh(v, t))
             self.vertices.append(v)
+            self.copies.append(copy)
+
+    def exact(self, i: int, placed: Placed) -> cq.Shape:
+        """Part i's meshed copy where `placed` puts it."""
+        return self.copies[i].moved(location(placed.world))
 
     def objects(self, placed):
         out, boxes = [], []
@@ -150,7 +158,8 @@ def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
             key = (i, j, rel.tobytes())
             if key not in cache:
                 checked += 1
-                cache[key] = _pair(pa, pb, objects[i], objects[j], fit_tol, exact_below)
+                cache[key] = _pair(meshes.exact(i, pa), meshes.exact(j, pb), objects[i], objects[j], fit_tol,
+                                   exact_below)
             dist, overlap = cache[key]
             if dist is None:
                 continue
@@ -169,7 +178,7 @@ def check(params: HeadParameters, assembly: Assembly, poses=None, progress=None,
     return Report(len(poses), checked, _unique(interferences), _unique(contacts), clearances, minimum)
 
 
-def _pair(pa: Placed, pb: Placed, oa, ob, fit_tol: float, exact_below: float):
+def _pair(a: cq.Shape, b: cq.Shape, oa, ob, fit_tol: float, exact_below: float):
     """(distance or None when above NEAR, common volume). Near the wanted minimum clearance the distance is
     measured exactly, so a LOW verdict never rests on the mesh approximation."""
     mesh_dist = geom.mesh_distance(oa, ob)
@@ -177,8 +186,8 @@ def _pair(pa: Placed, pb: Placed, oa, ob, fit_tol: float, exact_below: float):
         return None, 0.0
     if mesh_dist > max(fit_tol + 2 * MESH_DEFLECTION, exact_below):
         return mesh_dist, 0.0     # certainly apart: the mesh distance is the clearance to +-0.1 mm
-    dist = geom.distance(pa.shape, pb.shape)
-    overlap = pa.shape.intersect(pb.shape).Volume() if dist < fit_tol else 0.0
+    dist = geom.distance(a, b)
+    overlap = a.intersect(b).Volume() if dist < fit_tol else 0.0
     return dist, overlap
 
 

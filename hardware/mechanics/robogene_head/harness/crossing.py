@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import lru_cache
 
 import fcl
 import numpy as np
@@ -53,6 +54,7 @@ class _Cable:
     flats: tuple                 # (cable, width, thickness) of each flat cable
     own: list                    # (angles, poses) of its own sweep, the order of curves
     curves: list                 # its curve at each pose of that sweep
+    unplace: dict = field(default_factory=dict)     # own sweep's index -> the inverse of clamp A's link pose there
 
     @property
     def radius(self) -> float:
@@ -70,11 +72,23 @@ def _world(params: HeadParameters, cable: _Cable, samples: int, angles: dict, po
     """The cable's curve at these joint angles in the neck base's frame: the points and the width directions."""
     index = 0
     for j in cable.span.joints:
-        values = np.linspace(params.joints[j].lower, params.joints[j].upper, samples)
+        values = _grid(params, j, samples)
         index = index * samples + int(np.argmin(np.abs(values - angles[j])))
     curve = cable.curves[index]
-    carry = poses[cable.link] @ np.linalg.inv(cable.own[index][1][cable.link])
+    if index not in cable.unplace:
+        cable.unplace[index] = np.linalg.inv(cable.own[index][1][cable.link])
+    carry = poses[cable.link] @ cable.unplace[index]
     return (curve, curve.points @ carry[:3, :3].T + carry[:3, 3], curve.widths @ carry[:3, :3].T)
+
+
+@lru_cache(maxsize=None)
+def _grid_cached(lower: float, upper: float, samples: int) -> np.ndarray:
+    return np.linspace(lower, upper, samples)
+
+
+def _grid(params: HeadParameters, joint: str, samples: int) -> np.ndarray:
+    """A joint's sweep angles (the same the plan swept it at)."""
+    return _grid_cached(params.joints[joint].lower, params.joints[joint].upper, samples)
 
 
 def _tied(cable: _Cable, curve, zone: float) -> tuple[np.ndarray, np.ndarray]:
@@ -85,16 +99,21 @@ def _tied(cable: _Cable, curve, zone: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, zone: float, samples: int,
-                  near: dict[str, Sequence[float]]) -> Crossing | None:
-    """The deepest touch of two spans' cables over their sweep together, None if they never touch."""
+                  near: dict[str, Sequence[float]], link_poses: dict | None = None) -> Crossing | None:
+    """The deepest touch of two spans' cables over their sweep together, None if they never touch. link_poses: the
+    links' poses by joint angles, kept across pairs (many pairs sweep the same joints)."""
+    link_poses = {} if link_poses is None else link_poses
     own = sorted(set(first.span.joints) | set(second.span.joints))
-    grid = {j: np.linspace(params.joints[j].lower, params.joints[j].upper, samples) for j in own}
+    grid = {j: _grid(params, j, samples) for j in own}
     grid.update({j: v for j, v in near.items() if j not in grid})
     worst: Crossing | None = None
     reach = first.radius + second.radius
     for values in itertools.product(*grid.values()):
         angles = {j: float(v) for j, v in zip(grid, values)}
-        poses = kinematics.link_poses(params, angles)
+        pose_key = tuple(sorted(angles.items()))
+        if pose_key not in link_poses:
+            link_poses[pose_key] = kinematics.link_poses(params, angles)
+        poses = link_poses[pose_key]
         c1, p1, w1 = _world(params, first, samples, angles, poses)
         c2, p2, w2 = _world(params, second, samples, angles, poses)
         # broad phase: the two curves' bounding spheres, then every piece's centre line against the other's
@@ -144,10 +163,10 @@ def check(params: HeadParameters, harness: Harness) -> list[Crossing]:
     zone = params.root.node("harness").num("clamp_zone", minimum=0)
     samples = harness.spec.sweep_samples
     cables = [_cable(params, harness, key, span) for key, span in harness.spans.items()]
-    out = []
+    out, link_poses = [], {}
     for first, second in itertools.combinations(cables, 2):
         near = near_joints(params, tuple(sorted(set(first.span.joints) | set(second.span.joints))))
-        found = pair_crossing(params, first, second, zone, samples, near)
+        found = pair_crossing(params, first, second, zone, samples, near, link_poses)
         if found is not None:
             out.append(found)
     return out
