@@ -27,9 +27,10 @@ from robogene_head_model.params import HeadParameters
 
 from .. import kinematics
 from . import spans
-from .segments import piece_distances
 from .clearance import basis, bundle_od, flat_cables, near_joints, sections
 from .plan import Harness, Span, swept_curves
+from .segments import piece_distances
+
 
 @dataclass(frozen=True)
 class Crossing:
@@ -83,7 +84,9 @@ def _world(params: HeadParameters, cable: _Cable, samples: int, angles: dict, po
 
 @lru_cache(maxsize=None)
 def _grid_cached(lower: float, upper: float, samples: int) -> np.ndarray:
-    return np.linspace(lower, upper, samples)
+    values = np.linspace(lower, upper, samples)
+    values.flags.writeable = False      # shared by every caller
+    return values
 
 
 def _grid(params: HeadParameters, joint: str, samples: int) -> np.ndarray:
