@@ -47,9 +47,9 @@ _GEOMETRY_PACKAGE = "parts"
 def code_modules(*modules) -> dict[str, Path]:
     """These modules and every module of this package they use, followed through their imports (name -> file)."""
     seen: dict[str, Path] = {}
-    todo = list(modules)
-    while todo:
-        module = todo.pop()
+    unvisited = list(modules)
+    while unvisited:
+        module = unvisited.pop()
         name = module.__name__
         if name in seen or not name.startswith("robogene_head") or name.split(".")[1:2] == [_GEOMETRY_PACKAGE]:
             continue
@@ -58,7 +58,7 @@ def code_modules(*modules) -> dict[str, Path]:
             used = value if isinstance(value, types.ModuleType) else sys.modules.get(getattr(value, "__module__", "")
                                                                                     or "")
             if isinstance(used, types.ModuleType):
-                todo.append(used)
+                unvisited.append(used)
     return seen
 
 
