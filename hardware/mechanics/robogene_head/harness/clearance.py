@@ -42,7 +42,7 @@ from robogene_head_model.params import HeadParameters, Node
 
 from .. import fcl_mesh, jackshafts, kinematics
 from . import spans
-from .plan import Harness, Span, swept_curves
+from .plan import Harness, Span, joint_angles, swept_curves
 from .spec import Clamp
 
 PACKING = 0.65            # share of a loose bundle's circle its wires fill
@@ -292,8 +292,7 @@ def near_joints(params: HeadParameters, joints: Sequence[str]) -> dict[str, np.n
         if unknown:
             raise table.fail(own, f"{unknown[0]!r} is no joint of the head")
         near.update(listed)
-    return {j: np.linspace(params.joints[j].lower, params.joints[j].upper, int(samples))
-            for j in sorted(near - set(joints))}
+    return {j: joint_angles(params, j, samples) for j in sorted(near - set(joints))}
 
 
 def turning_parts(params: HeadParameters, parts) -> frozenset[str]:

@@ -18,7 +18,6 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import fcl
 import numpy as np
@@ -28,7 +27,7 @@ from robogene_head_model.params import HeadParameters
 from .. import kinematics
 from . import spans
 from .clearance import basis, bundle_od, flat_cables, near_joints, sections
-from .plan import Harness, Span, swept_curves
+from .plan import Harness, Span, joint_angles, swept_curves
 from .segments import piece_distances
 
 
@@ -55,6 +54,7 @@ class _Cable:
     flats: tuple                 # (cable, width, thickness) of each flat cable
     own: list                    # (angles, poses) of its own sweep, the order of curves
     curves: list                 # its curve at each pose of that sweep
+    grids: list                  # its own joints' sweep angles (plan.joint_angles), in span.joints' order
     unplace: dict = field(default_factory=dict)     # own sweep's index -> the inverse of clamp A's link pose there
 
     @property
@@ -66,32 +66,20 @@ class _Cable:
 def _cable(params: HeadParameters, h: Harness, key: tuple[str, str], span: Span) -> _Cable:
     a, b = h.spec.clamps[key[0]], h.spec.clamps[key[1]]
     own, curves = swept_curves(params, span, a, b, h.spec.sweep_samples)
-    return _Cable(key, span, a.link, (a.link, b.link), bundle_od(span), flat_cables(span), own, curves)
+    return _Cable(key, span, a.link, (a.link, b.link), bundle_od(span), flat_cables(span), own, curves,
+                  [joint_angles(params, j, h.spec.sweep_samples) for j in span.joints])
 
 
 def _world(params: HeadParameters, cable: _Cable, samples: int, angles: dict, poses: dict):
     """The cable's curve at these joint angles in the neck base's frame: the points and the width directions."""
     index = 0
-    for j in cable.span.joints:
-        values = _grid(params, j, samples)
+    for j, values in zip(cable.span.joints, cable.grids):
         index = index * samples + int(np.argmin(np.abs(values - angles[j])))
     curve = cable.curves[index]
     if index not in cable.unplace:
         cable.unplace[index] = np.linalg.inv(cable.own[index][1][cable.link])
     carry = poses[cable.link] @ cable.unplace[index]
     return (curve, curve.points @ carry[:3, :3].T + carry[:3, 3], curve.widths @ carry[:3, :3].T)
-
-
-@lru_cache(maxsize=None)
-def _grid_cached(lower: float, upper: float, samples: int) -> np.ndarray:
-    values = np.linspace(lower, upper, samples)
-    values.flags.writeable = False      # shared by every caller
-    return values
-
-
-def _grid(params: HeadParameters, joint: str, samples: int) -> np.ndarray:
-    """A joint's sweep angles (the same the plan swept it at)."""
-    return _grid_cached(params.joints[joint].lower, params.joints[joint].upper, samples)
 
 
 def _tied(cable: _Cable, curve, zone: float) -> tuple[np.ndarray, np.ndarray]:
@@ -107,7 +95,7 @@ def pair_crossing(params: HeadParameters, first: _Cable, second: _Cable, zone: f
     links' poses by joint angles, kept across pairs (many pairs sweep the same joints)."""
     link_poses = {} if link_poses is None else link_poses
     own = sorted(set(first.span.joints) | set(second.span.joints))
-    grid = {j: _grid(params, j, samples) for j in own}
+    grid = {j: joint_angles(params, j, samples) for j in own}
     grid.update({j: v for j, v in near.items() if j not in grid})
     worst: Crossing | None = None
     reach = first.radius + second.radius

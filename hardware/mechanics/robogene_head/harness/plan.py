@@ -103,8 +103,14 @@ def frame(pose: np.ndarray, c: Clamp) -> spans.Frame:
     return spans.Frame(r @ c.at + pose[:3, 3], r @ c.dir, r @ c.up)
 
 
+def joint_angles(params: HeadParameters, joint: str, samples: int) -> np.ndarray:
+    """A joint's sweep angles: `samples` evenly over its range, ends included (the checks look a span's curve up by
+    them, so every sweep uses these)."""
+    return np.linspace(params.joints[joint].lower, params.joints[joint].upper, int(samples))
+
+
 def sweep(params: HeadParameters, joints: tuple[str, ...], samples: int):
-    ranges = [np.linspace(params.joints[j].lower, params.joints[j].upper, samples) for j in joints]
+    ranges = [joint_angles(params, j, samples) for j in joints]
     for values in itertools.product(*ranges):
         angles = dict(zip(joints, (float(v) for v in values)))
         yield angles, kinematics.link_poses(params, angles)
